@@ -1,0 +1,57 @@
+#ifndef bfemp_boundary_grid_boundaries_h
+#define bfemp_boundary_grid_boundaries_h
+
+#include <bfemp/boundary/boundary_condition.h>
+#include <bfemp/boundary/level_set.h>
+#include <bfemp/grid/lattice.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * prm subsection "boundaries": the conditions the background grid imposes
+   * on node velocities, i.e. domain walls (layers of nodes at the faces of
+   * the grid box) and analytic level-set obstacles.
+   */
+  template <int dim>
+  class GridBoundaries
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm, const unsigned int n_level_sets);
+
+    /** Reads only "number of level sets" (first pass of the reader). */
+    static unsigned int
+    parse_number_of_level_sets(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Applies every condition to the velocities of the nodes with mass > 0.
+     * Walls act first, level sets after, in prm order.
+     */
+    void
+    apply(const Lattice<dim>          &lattice,
+          const std::vector<double>   &mass,
+          std::vector<Tensor<1, dim>> &velocity,
+          const double                 time) const;
+
+    /** Number of node layers a wall occupies. */
+    unsigned int
+    wall_layers() const;
+
+  private:
+    /** wall_active[2 d] is the lower face of direction d, [2 d + 1] upper. */
+    std::array<bool, 2 * dim>    wall_active{};
+    BoundaryCondition            wall_condition;
+    unsigned int                 layers = 2;
+    std::vector<LevelSet<dim>>   level_sets;
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,39 @@
+#ifndef bfemp_io_particle_output_h
+#define bfemp_io_particle_output_h
+
+#include <bfemp/io/pvd_series.h>
+#include <bfemp/material/material.h>
+#include <bfemp/particles/particle_system.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * The particle snapshots of a run: particles_NNNNN.vtu files (one VTK
+   * vertex per particle) and particles.pvd listing them with their times.
+   * Point data: velocity, displacement (x - X), cauchy_stress (tensor),
+   * von_mises, J, mass, material_id, body_id.
+   */
+  template <int dim>
+  class ParticleOutput
+  {
+  public:
+    ParticleOutput(const std::string                                  &folder,
+                   const std::vector<std::unique_ptr<Material<dim>>> &materials);
+
+    void
+    write(const ParticleSystem<dim> &particles,
+          const double               time,
+          const unsigned int         snapshot);
+
+  private:
+    std::string                                         folder;
+    const std::vector<std::unique_ptr<Material<dim>>>  &materials;
+    PvdSeries                                           series;
+  };
+} // namespace bfemp
+
+#endif

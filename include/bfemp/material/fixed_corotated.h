@@ -1,0 +1,56 @@
+#ifndef bfemp_material_fixed_corotated_h
+#define bfemp_material_fixed_corotated_h
+
+#include <bfemp/material/material.h>
+
+namespace bfemp
+{
+  /**
+   * Fixed corotated elasticity (Stomakhin, Howes, Schroeder, Teran, 2012,
+   * "Energetically consistent invertible elasticity"):
+   * @f[
+   *   \psi(F) = \mu \| F - R \|_F^2 + \frac{\lambda}{2} (J - 1)^2, \qquad
+   *   P = 2 \mu (F - R) + \lambda (J - 1) J F^{-T},
+   * @f]
+   * where R is the rotation closest to F, i.e. the rotation of the polar
+   * decomposition F = R S (for det F < 0, the proper rotation for which S
+   * has one negative eigenvalue, as in the paper's sign-fixed SVD). Unlike
+   * neo-Hookean, psi stays finite through inversion, but R, and therefore
+   * all three functions, need det F != 0.
+   *
+   * The tangent uses dR = R W, with W skew: differentiating F = R S gives
+   * R^T dF - dF^T R = W S + S W, which in 3D is the linear system
+   * (tr(S) I - S) w = axial(R^T dF - dF^T R) for the axial vector w of W and
+   * in 2D the scalar equation tr(S) w = (R^T dF - dF^T R)_10. The system is
+   * singular only where R is not differentiable (two signed singular values
+   * summing to zero, possible only for inverted F).
+   */
+  template <int dim>
+  class FixedCorotated : public Material<dim>
+  {
+  public:
+    explicit FixedCorotated(const ElasticModuli &moduli);
+
+    /** psi = mu ||F - R||^2 + lambda/2 (J - 1)^2. */
+    double
+    energy_density(const Tensor<2, dim> &F) const override;
+
+    /** P = 2 mu (F - R) + lambda (J - 1) J F^-T. */
+    Tensor<2, dim>
+    first_piola_kirchhoff(const Tensor<2, dim> &F) const override;
+
+    /**
+     * dP/dF = 2 mu (I - dR/dF) + lambda cof(F) x cof(F)
+     *         + lambda (J - 1) d cof(F)/dF, with cof(F) = J F^-T and dR/dF as
+     * described in the class documentation.
+     */
+    Tensor<4, dim>
+    first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const override;
+
+    /** "fixed corotated". */
+    std::string
+    name() const override;
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,166 @@
+#ifndef bfemp_particles_particle_system_h
+#define bfemp_particles_particle_system_h
+
+#include <bfemp/grid/background_grid.h>
+#include <bfemp/particles/particle_layout.h>
+
+#include <deal.II/base/parallel.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * The MPM particles, stored in a deal.II Particles::ParticleHandler on the
+   * background grid with the property layout of ParticleLayout, and the
+   * thread-parallel loops over them.
+   *
+   * Particle loops run over stripes of grid cells (stripe_width cells wide in
+   * direction 0). A particle's kernel stencil reaches at most one node below
+   * and two above its cell, so stripes two apart never write the same node:
+   * scatters (P2G) run all even stripes in parallel, then all odd ones. No
+   * locks, no per-thread copies of the grid, and sums are formed in a fixed
+   * order, so results do not depend on the number of threads.
+   */
+  template <int dim>
+  class ParticleSystem
+  {
+  public:
+    using Layout   = ParticleLayout<dim>;
+    using Accessor = Particles::ParticleAccessor<dim>;
+
+    static constexpr unsigned int stripe_width = 3;
+
+    explicit ParticleSystem(const BackgroundGrid<dim> &grid);
+
+    /** Adds one particle at x with all its properties. */
+    void
+    insert(const Point<dim> &x, const ArrayView<const double> &properties);
+
+    /** Call after the last insert(): sets up counts and stripes. */
+    void
+    finish_insertion();
+
+    types::particle_index
+    n_particles() const;
+
+    Particles::ParticleHandler<dim> &
+    handler();
+
+    const Particles::ParticleHandler<dim> &
+    handler() const;
+
+    /**
+     * After the particles moved: puts each in the cell that now contains it
+     * and updates its reference location. Throws SimulationError naming the
+     * particle if its kernel stencil left the grid.
+     */
+    void
+    update_cells();
+
+    /** f(particle) for all particles; race-free for scatters to the grid. */
+    template <typename Function>
+    void
+    for_each_scattering(const Function &f);
+
+    /** f(particle) for all particles, each particle on its own. */
+    template <typename Function>
+    void
+    for_each(const Function &f);
+
+    /**
+     * Sum over all particles of f(particle), formed stripe by stripe in a
+     * fixed order (deterministic for any thread count).
+     */
+    template <typename Result, typename Function>
+    Result
+    sum(const Function &f) const;
+
+  private:
+    template <typename Function>
+    void
+    for_stripes(const unsigned int first,
+                const unsigned int step,
+                const Function    &f);
+
+    void
+    rebuild_stripes();
+
+    const BackgroundGrid<dim>                                        &grid;
+    Particles::ParticleHandler<dim>                                   particle_handler;
+    types::particle_index                                             next_id = 0;
+    std::vector<std::vector<typename BackgroundGrid<dim>::cell_iterator>> stripes;
+  };
+
+
+
+  template <int dim>
+  template <typename Function>
+  void
+  ParticleSystem<dim>::for_stripes(const unsigned int first,
+                                   const unsigned int step,
+                                   const Function    &f)
+  {
+    const unsigned int n = (stripes.size() + step - 1 - first) / step;
+    parallel::apply_to_subranges(
+      0u,
+      n,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int s = begin; s < end; ++s)
+          for (const auto &cell : stripes[first + s * step])
+            for (auto &particle : particle_handler.particles_in_cell(cell))
+              f(particle);
+      },
+      1);
+  }
+
+
+
+  template <int dim>
+  template <typename Function>
+  void
+  ParticleSystem<dim>::for_each_scattering(const Function &f)
+  {
+    for_stripes(0, 2, f);
+    for_stripes(1, 2, f);
+  }
+
+
+
+  template <int dim>
+  template <typename Function>
+  void
+  ParticleSystem<dim>::for_each(const Function &f)
+  {
+    for_stripes(0, 1, f);
+  }
+
+
+
+  template <int dim>
+  template <typename Result, typename Function>
+  Result
+  ParticleSystem<dim>::sum(const Function &f) const
+  {
+    std::vector<Result> partial(stripes.size(), Result());
+    auto &handler = const_cast<Particles::ParticleHandler<dim> &>(
+      particle_handler);
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(stripes.size()),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int s = begin; s < end; ++s)
+          for (const auto &cell : stripes[s])
+            for (const auto &particle : handler.particles_in_cell(cell))
+              partial[s] += f(particle);
+      },
+      1);
+    Result result = Result();
+    for (const Result &p : partial)
+      result += p;
+    return result;
+  }
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,86 @@
+#ifndef bfemp_scene_simulation_h
+#define bfemp_scene_simulation_h
+
+#include <bfemp/grid/background_grid.h>
+#include <bfemp/integrator/explicit_mpm.h>
+#include <bfemp/io/diagnostics_writer.h>
+#include <bfemp/io/grid_output.h>
+#include <bfemp/io/particle_output.h>
+#include <bfemp/io/progress_reporter.h>
+#include <bfemp/io/step_diagnostics.h>
+#include <bfemp/material/material.h>
+#include <bfemp/particles/particle_system.h>
+#include <bfemp/scene/scene_parameters.h>
+#include <bfemp/transfer/particle_grid_transfer.h>
+
+#include <memory>
+#include <ostream>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * A scene built from its parameters and run to the end time. The
+   * constructor builds and checks everything (bodies inside the grid, not
+   * empty, not overlapping) before run() creates the output folder, so bad
+   * input never leaves output behind.
+   */
+  template <int dim>
+  class Simulation
+  {
+  public:
+    Simulation(const SceneParameters<dim> &parameters,
+               const std::string          &parameter_file,
+               std::ostream               &console);
+
+    /** Runs to the end time; throws SimulationError on failure. */
+    void
+    run();
+
+    const ParticleSystem<dim> &
+    particles() const;
+
+    /** The diagnostics of the current state. */
+    StepDiagnostics<dim>
+    diagnostics() const;
+
+  private:
+    /** Samples every body into particles and checks the scene at t = 0. */
+    void
+    create_bodies();
+
+    /** dx / (c_p + max |v_p|): the explicit CFL time scale. */
+    double
+    cfl_time_scale(const double max_speed) const;
+
+    /** The next dt; throws if a fixed dt breaks the CFL limit. */
+    double
+    next_time_step(const double time, const double max_speed) const;
+
+    /** Throws SimulationError unless the state is finite and uninverted. */
+    void
+    check_state(const StepDiagnostics<dim> &d) const;
+
+    void
+    write_snapshot(const double time);
+
+    void
+    print_test_summary(const double time, const StepDiagnostics<dim> &d) const;
+
+    const SceneParameters<dim>                  parameters;
+    const std::string                           parameter_file;
+    std::ostream                               &console;
+    BackgroundGrid<dim>                         grid;
+    std::vector<std::unique_ptr<Material<dim>>> materials;
+    ParticleSystem<dim>                         particle_system;
+    ParticleGridTransfer<dim>                   transfer;
+    ExplicitMPM<dim>                            integrator;
+    std::string                                 output_folder;
+    std::unique_ptr<ParticleOutput<dim>>        particle_output;
+    std::unique_ptr<GridOutput<dim>>            grid_output;
+    unsigned int                                step     = 0;
+    unsigned int                                snapshot = 0;
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Sets bfemp up on Debian 12 and builds it; then runs what was asked:
+#   ./setup.sh run     install what is missing, build, run prm/default.prm
+#   ./setup.sh test    install what is missing, build, run the test suite
+#   ./setup.sh build   install what is missing and build only
+# Running it again only rebuilds what changed (and ccache keeps compiles).
+set -euo pipefail
+cd "$(dirname "$0")"
+mode="${1:-build}"
+
+packages=(libdeal.ii-dev cmake g++ make ccache numdiff perl
+          python3-vtk9 python3-numpy python3-matplotlib)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null |
+    grep -q "install ok installed" || missing+=("$package")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq "${missing[@]}"
+fi
+
+jobs="$(nproc)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 ||
+  { cat build.log; exit 1; }
+cmake --build build -j "$jobs" ||
+  { echo "setup: build failed"; exit 1; }
+rm -f build.log
+
+case "$mode" in
+  run)
+    build/bfemp prm/default.prm
+    echo "setup: open output/default/particles.pvd in ParaView"
+    ;;
+  test)
+    cd build
+    # "validation" holds the long runs; see doc/validation.md for them.
+    ctest -j "$jobs" -LE validation --output-on-failure
+    ;;
+  build) ;;
+  *) echo "usage: ./setup.sh [run|test|build]"; exit 2 ;;
+esac

@@ -1,0 +1,158 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/base/parameter_tools.h>
+#include <bfemp/boundary/grid_boundaries.h>
+
+#include <deal.II/base/utilities.h>
+
+namespace bfemp
+{
+  namespace
+  {
+    const char *wall_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  }
+
+
+
+  template <int dim>
+  void
+  GridBoundaries<dim>::declare_parameters(ParameterHandler  &prm,
+                                          const unsigned int n_level_sets)
+  {
+    prm.enter_subsection("boundaries");
+    prm.declare_entry("walls",
+                      "all",
+                      Patterns::Anything(),
+                      "[-] Faces of the grid box that act as walls: 'all', "
+                      "'none', or a comma-separated list of x-, x+, y-, y+, "
+                      "z- and z+.");
+    prm.declare_entry("wall condition",
+                      "separable slip",
+                      Patterns::Selection("sticky|slip|separable slip"),
+                      "[-] Condition of the domain walls.");
+    prm.declare_entry("wall friction",
+                      "0",
+                      Patterns::Double(0.),
+                      "[-] Coulomb coefficient of the walls (separable slip "
+                      "only).");
+    prm.declare_entry("wall layers",
+                      "2",
+                      Patterns::Integer(1),
+                      "[cells] Node layers at each wall that get the wall "
+                      "condition; particles must stay outside them.");
+    prm.declare_entry("number of level sets",
+                      "0",
+                      Patterns::Integer(0),
+                      "[-] Number of 'level set i' subsections.");
+    for (unsigned int i = 0; i < std::max(n_level_sets, 1u); ++i)
+      {
+        prm.enter_subsection(parameter_tools::numbered("level set", i));
+        LevelSet<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  GridBoundaries<dim>::parse_number_of_level_sets(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundaries");
+    const unsigned int n = prm.get_integer("number of level sets");
+    prm.leave_subsection();
+    return n;
+  }
+
+
+
+  template <int dim>
+  void
+  GridBoundaries<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundaries");
+    const std::string walls = prm.get("walls");
+    wall_active.fill(walls == "all");
+    if (walls != "all" && walls != "none")
+      for (const std::string &name : Utilities::split_string_list(walls, ','))
+        {
+          bool known = false;
+          for (unsigned int w = 0; w < 2 * dim; ++w)
+            if (name == wall_names[w])
+              known = wall_active[w] = true;
+          require_input(known,
+                        "boundaries",
+                        "walls",
+                        "'" + walls + "'",
+                        "allowed: all, none, or a list of x-, x+, y-, y+" +
+                          std::string(dim == 3 ? ", z-, z+" : ""));
+        }
+    wall_condition.type =
+      BoundaryCondition::parse_type(prm.get("wall condition"));
+    wall_condition.friction = prm.get_double("wall friction");
+    layers                  = prm.get_integer("wall layers");
+
+    level_sets.resize(prm.get_integer("number of level sets"));
+    for (unsigned int i = 0; i < level_sets.size(); ++i)
+      {
+        const std::string name = parameter_tools::numbered("level set", i);
+        prm.enter_subsection(name);
+        level_sets[i].parse_parameters(prm, "boundaries/" + name);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  GridBoundaries<dim>::apply(const Lattice<dim>          &lattice,
+                             const std::vector<double>   &mass,
+                             std::vector<Tensor<1, dim>> &velocity,
+                             const double                 time) const
+  {
+    const Tensor<1, dim> at_rest;
+    for (std::size_t node = 0; node < mass.size(); ++node)
+      {
+        if (mass[node] <= 0.)
+          continue;
+        const auto index = lattice.node_multi_index(node);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            Tensor<1, dim> inward;
+            if (wall_active[2 * d] && index[d] <= static_cast<int>(layers))
+              inward[d] = 1.;
+            else if (wall_active[2 * d + 1] &&
+                     index[d] >=
+                       static_cast<int>(lattice.n_cells[d] - layers))
+              inward[d] = -1.;
+            if (inward.norm_square() > 0.)
+              wall_condition.apply(velocity[node], inward, at_rest);
+          }
+        if (!level_sets.empty())
+          {
+            const Point<dim> x = lattice.node_position(node);
+            for (const LevelSet<dim> &level_set : level_sets)
+              if (level_set.value(x, time) <= 0.)
+                level_set.condition().apply(velocity[node],
+                                            level_set.normal(x, time),
+                                            level_set.velocity());
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  GridBoundaries<dim>::wall_layers() const
+  {
+    return layers;
+  }
+
+
+
+  template class GridBoundaries<2>;
+  template class GridBoundaries<3>;
+} // namespace bfemp

@@ -1,0 +1,62 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/io/output_parameters.h>
+
+namespace bfemp
+{
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    prm.declare_entry("directory",
+                      "output",
+                      Patterns::Anything(),
+                      "[-] Folder that receives <run name>/ with the PVD/VTU "
+                      "series and diagnostics.csv (relative to the working "
+                      "directory).");
+    prm.declare_entry("interval",
+                      "0.01",
+                      Patterns::Double(),
+                      "[s] Simulated time between VTU snapshots; 0 writes "
+                      "every step.");
+    prm.declare_entry("write particles",
+                      "true",
+                      Patterns::Bool(),
+                      "[-] Write the particle VTU series.");
+    prm.declare_entry("write grid",
+                      "false",
+                      Patterns::Bool(),
+                      "[-] Also write the active grid (cells touching a node "
+                      "with mass) with nodal mass and velocity.");
+    prm.declare_entry("diagnostics interval",
+                      "1",
+                      Patterns::Integer(1),
+                      "[steps] Steps between rows of diagnostics.csv (and the "
+                      "NaN / inversion checks, which also run at every "
+                      "snapshot).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    directory            = prm.get("directory");
+    interval             = prm.get_double("interval");
+    write_particles      = prm.get_bool("write particles");
+    write_grid           = prm.get_bool("write grid");
+    diagnostics_interval = prm.get_integer("diagnostics interval");
+    prm.leave_subsection();
+    require_input(!directory.empty(),
+                  "output",
+                  "directory",
+                  "''",
+                  "must name a folder");
+    require_input(interval >= 0.,
+                  "output",
+                  "interval",
+                  to_input_string(interval),
+                  "must be >= 0 [s]");
+  }
+} // namespace bfemp

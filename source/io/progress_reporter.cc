@@ -1,0 +1,43 @@
+#include <bfemp/io/progress_reporter.h>
+
+#include <iomanip>
+
+namespace bfemp
+{
+  ProgressReporter::ProgressReporter(std::ostream &out,
+                                     const double  end_time,
+                                     const bool    enabled)
+    : out(out)
+    , end_time(end_time)
+    , enabled(enabled)
+    , start(std::chrono::steady_clock::now())
+  {}
+
+
+
+  double
+  ProgressReporter::wall_time() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                         start)
+      .count();
+  }
+
+
+
+  void
+  ProgressReporter::report(const unsigned int step,
+                           const double       time,
+                           const double       dt)
+  {
+    if (!enabled)
+      return;
+    const double elapsed   = wall_time();
+    const double remaining = time > 0. ? elapsed * (end_time - time) / time : 0.;
+    out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
+        << std::scientific << std::setprecision(4) << time
+        << "  dt = " << dt << std::defaultfloat << std::fixed
+        << std::setprecision(1) << "  wall " << elapsed << " s  left ~"
+        << remaining << " s" << std::defaultfloat << std::endl;
+  }
+} // namespace bfemp

@@ -1,0 +1,105 @@
+#include <bfemp/io/step_diagnostics.h>
+
+#include <deal.II/base/tensor.h>
+
+namespace bfemp
+{
+  template <int dim>
+  StepDiagnostics<dim> &
+  StepDiagnostics<dim>::operator+=(const StepDiagnostics &other)
+  {
+    mass += other.mass;
+    kinetic_energy += other.kinetic_energy;
+    elastic_energy += other.elastic_energy;
+    gravitational_energy += other.gravitational_energy;
+    linear_momentum += other.linear_momentum;
+    angular_momentum += other.angular_momentum;
+    min_J     = std::min(min_J, other.min_J);
+    max_speed = std::max(max_speed, other.max_speed);
+    finite    = finite && other.finite;
+    return *this;
+  }
+
+
+
+  template <int dim>
+  double
+  StepDiagnostics<dim>::total_energy() const
+  {
+    return kinetic_energy + elastic_energy + gravitational_energy;
+  }
+
+
+
+  namespace
+  {
+    /** x cross m v plus the affine part m eps_abc B_cb, B = C D. */
+    template <int dim>
+    Tensor<1, 3>
+    particle_angular_momentum(const double          m,
+                     const Point<dim>     &x,
+                     const Tensor<1, dim> &v,
+                     const Tensor<2, dim> &B)
+    {
+      Tensor<1, 3> L;
+      if constexpr (dim == 2)
+        L[2] = m * (x[0] * v[1] - x[1] * v[0] + B[1][0] - B[0][1]);
+      else
+        {
+          const Tensor<1, 3> xv = cross_product_3d(Tensor<1, 3>(x), v);
+          for (unsigned int a = 0; a < 3; ++a)
+            {
+              const unsigned int b = (a + 1) % 3, c = (a + 2) % 3;
+              L[a] = m * (xv[a] + B[c][b] - B[b][c]);
+            }
+        }
+      return L;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  StepDiagnostics<dim>
+  StepDiagnostics<dim>::measure(
+    const ParticleSystem<dim>                          &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const ParticleGridTransfer<dim>                    &transfer,
+    const Tensor<1, dim>                               &gravity)
+  {
+    using Layout = ParticleLayout<dim>;
+    return particles.template sum<StepDiagnostics<dim>>(
+      [&](const auto &particle) {
+        const auto           p = particle.get_properties();
+        const Point<dim>     x = particle.get_location();
+        const double         m = p[Layout::mass];
+        const Tensor<1, dim> v = Layout::get_vector(p, Layout::velocity);
+        const Tensor<2, dim> F =
+          Layout::get_tensor(p, Layout::deformation_gradient);
+        const Tensor<2, dim> B =
+          Layout::get_tensor(p, Layout::affine_velocity) *
+          transfer.apic_inertia(x);
+        const auto &material =
+          *materials[static_cast<unsigned int>(p[Layout::material_id])];
+
+        StepDiagnostics<dim> d;
+        d.mass                 = m;
+        d.kinetic_energy       = 0.5 * m * v.norm_square();
+        d.elastic_energy       = p[Layout::rest_volume] * material.energy_density(F);
+        d.gravitational_energy = -m * (gravity * x);
+        d.linear_momentum      = m * v;
+        d.angular_momentum     = particle_angular_momentum(m, x, v, B);
+        d.min_J                = determinant(F);
+        d.max_speed            = v.norm();
+        d.finite = std::isfinite(d.kinetic_energy) && std::isfinite(d.min_J) &&
+                   std::isfinite(x.norm_square()) &&
+                   std::isfinite(F.norm_square());
+        return d;
+      });
+  }
+
+
+
+  template struct StepDiagnostics<2>;
+  template struct StepDiagnostics<3>;
+} // namespace bfemp

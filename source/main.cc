@@ -1,0 +1,99 @@
+// bfemp: read the dimension of the scene first, then run it as 2D or 3D.
+
+#include <bfemp/base/input_error.h>
+#include <bfemp/scene/scene_parameters.h>
+#include <bfemp/scene/simulation.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+  using namespace bfemp;
+
+  template <int dim>
+  void
+  run(const std::string &file)
+  {
+    SceneParameters<dim> parameters;
+    parameters.read(file);
+    Simulation<dim> simulation(parameters, file, std::cout);
+    simulation.run();
+  }
+
+
+
+  /** Documented defaults as prm (2D and 3D) and JSON into @p folder. */
+  void
+  print_parameters(const std::string &folder)
+  {
+    std::filesystem::create_directories(folder);
+    const auto write = [&](auto dim_constant, const std::string &name) {
+      constexpr int    dim = decltype(dim_constant)::value;
+      ParameterHandler prm;
+      SceneParameters<dim>::declare_parameters(prm, {1}, 1);
+      std::ofstream prm_file(folder + "/" + name + ".prm");
+      prm.print_parameters(prm_file, ParameterHandler::PRM);
+      std::ofstream json_file(folder + "/" + name + ".json");
+      prm.print_parameters(json_file, ParameterHandler::JSON);
+    };
+    write(std::integral_constant<int, 2>(), "parameters_2d");
+    write(std::integral_constant<int, 3>(), "parameters_3d");
+    std::cout << "bfemp: wrote the documented defaults to " << folder << "/"
+              << std::endl;
+  }
+
+
+
+  int
+  usage()
+  {
+    std::cerr << "usage: bfemp FILE.prm\n"
+                 "       bfemp --print-parameters [FOLDER]   (default: .)\n";
+    return 2;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  if (argc < 2)
+    return usage();
+  const std::string argument = argv[1];
+  try
+    {
+      if (argument == "--print-parameters")
+        {
+          print_parameters(argc > 2 ? argv[2] : ".");
+          return 0;
+        }
+      if (argument.rfind("--", 0) == 0 || argc > 2)
+        return usage();
+      if (read_dimension(argument) == 2)
+        run<2>(argument);
+      else
+        run<3>(argument);
+    }
+  catch (const bfemp::InputError &error)
+    {
+      std::cerr << "bfemp: input error: " << error.what() << std::endl;
+      return 1;
+    }
+  catch (const bfemp::SimulationError &error)
+    {
+      std::cerr << "bfemp: simulation stopped: " << error.what() << std::endl;
+      return 3;
+    }
+  catch (const std::exception &error)
+    {
+      std::cerr << "bfemp: error: " << error.what() << std::endl;
+      return 4;
+    }
+  return 0;
+}

@@ -1,0 +1,179 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/base/parameter_tools.h>
+#include <bfemp/particles/shape_primitive.h>
+
+#include <algorithm>
+
+namespace bfemp
+{
+  template <int dim>
+  void
+  ShapePrimitive<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    using namespace parameter_tools;
+    prm.declare_entry("type",
+                      "box",
+                      Patterns::Selection(
+                        "box|ball|disk|shell|ring|semi-ring|semi-shell"),
+                      "[-] Primitive: box; ball (= disk in 2D); shell (= ring "
+                      "in 2D) between inner and outer radius; semi-ring (= "
+                      "semi-shell) is the half of a shell on the side of "
+                      "'direction'.");
+    prm.declare_entry("operation",
+                      "add",
+                      Patterns::Selection("add|subtract"),
+                      "[-] Unite with (add) or cut from (subtract) the "
+                      "primitives before it.");
+    declare_point<dim>(prm,
+                       "lower corner",
+                       components<dim>(0.4, 0.4, 0.4),
+                       "[m] Box: lower corner");
+    declare_point<dim>(prm,
+                       "upper corner",
+                       components<dim>(0.6, 0.6, 0.6),
+                       "[m] Box: upper corner");
+    declare_point<dim>(prm,
+                       "center",
+                       components<dim>(0.5, 0.5, 0.5),
+                       "[m] Ball, shell, semi-ring: centre");
+    prm.declare_entry("inner radius",
+                      "0",
+                      Patterns::Double(),
+                      "[m] Shell, semi-ring: inner radius (>= 0, < outer).");
+    prm.declare_entry("outer radius",
+                      "0.1",
+                      Patterns::Double(),
+                      "[m] Ball, shell, semi-ring: outer radius (> 0).");
+    declare_point<dim>(prm,
+                       "direction",
+                       components<dim>(0, 1, 0),
+                       "[-] Semi-ring: the kept half is where (x - center) . "
+                       "direction >= 0");
+  }
+
+
+
+  template <int dim>
+  void
+  ShapePrimitive<dim>::parse_parameters(ParameterHandler  &prm,
+                                        const std::string &where)
+  {
+    using namespace parameter_tools;
+    const std::string name = prm.get("type");
+    type         = (name == "box")                  ? Type::box :
+                   (name == "ball" || name == "disk") ? Type::ball :
+                   (name == "shell" || name == "ring") ? Type::shell :
+                                                         Type::semi_shell;
+    subtract     = prm.get("operation") == "subtract";
+    lower_corner = get_point<dim>(prm, "lower corner");
+    upper_corner = get_point<dim>(prm, "upper corner");
+    center       = get_point<dim>(prm, "center");
+    inner_radius = prm.get_double("inner radius");
+    outer_radius = prm.get_double("outer radius");
+    direction    = get_vector<dim>(prm, "direction");
+
+    if (type == Type::box)
+      for (unsigned int d = 0; d < dim; ++d)
+        require_input(upper_corner[d] > lower_corner[d],
+                      where,
+                      "upper corner",
+                      to_input_string(upper_corner),
+                      "must exceed 'lower corner' (" +
+                        to_input_string(lower_corner) +
+                        ") in every direction");
+    else
+      {
+        require_input(outer_radius > 0.,
+                      where,
+                      "outer radius",
+                      to_input_string(outer_radius),
+                      "must be > 0 [m]");
+        if (type != Type::ball)
+          require_input(inner_radius >= 0. && inner_radius < outer_radius,
+                        where,
+                        "inner radius",
+                        to_input_string(inner_radius),
+                        "must be >= 0 and < the outer radius (" +
+                          to_input_string(outer_radius) + ")");
+        if (type == Type::semi_shell)
+          require_input(direction.norm() > 0.,
+                        where,
+                        "direction",
+                        to_input_string(Point<dim>(direction)),
+                        "must be a nonzero vector");
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  ShapePrimitive<dim>::outside_measure(const Point<dim> &x) const
+  {
+    switch (type)
+      {
+        case Type::box:
+          {
+            double measure = -std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < dim; ++d)
+              measure = std::max(
+                {measure, lower_corner[d] - x[d], x[d] - upper_corner[d]});
+            return measure;
+          }
+        case Type::ball:
+          return x.distance(center) - outer_radius;
+        case Type::shell:
+        case Type::semi_shell:
+          {
+            const double r       = x.distance(center);
+            double       measure = std::max(r - outer_radius, inner_radius - r);
+            if (type == Type::semi_shell)
+              measure = std::max(measure,
+                                 -((x - center) * direction) /
+                                   direction.norm());
+            return measure;
+          }
+      }
+    return 1.;
+  }
+
+
+
+  template <int dim>
+  bool
+  ShapePrimitive<dim>::contains(const Point<dim> &x) const
+  {
+    return outside_measure(x) <= 0.;
+  }
+
+
+
+  template <int dim>
+  bool
+  ShapePrimitive<dim>::contains_strictly(const Point<dim> &x) const
+  {
+    return outside_measure(x) < 0.;
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  ShapePrimitive<dim>::bounding_box() const
+  {
+    if (type == Type::box)
+      return BoundingBox<dim>(std::make_pair(lower_corner, upper_corner));
+    Point<dim> lower = center, upper = center;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= outer_radius;
+        upper[d] += outer_radius;
+      }
+    return BoundingBox<dim>(std::make_pair(lower, upper));
+  }
+
+
+
+  template struct ShapePrimitive<2>;
+  template struct ShapePrimitive<3>;
+} // namespace bfemp

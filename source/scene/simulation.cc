@@ -1,0 +1,298 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/particles/body_sampler.h>
+#include <bfemp/particles/shape.h>
+#include <bfemp/scene/simulation.h>
+
+#include <deal.II/base/multithread_info.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace bfemp
+{
+  template <int dim>
+  Simulation<dim>::Simulation(const SceneParameters<dim> &parameters,
+                              const std::string          &parameter_file,
+                              std::ostream               &console)
+    : parameters(parameters)
+    , parameter_file(parameter_file)
+    , console(console)
+    , grid(parameters.grid)
+    , particle_system(grid)
+    , transfer(grid, parameters.transfer, materials)
+    , integrator(grid,
+                 particle_system,
+                 transfer,
+                 parameters.boundaries,
+                 parameters.gravity,
+                 parameters.time.integrator)
+  {
+    if (parameters.run.threads > 0)
+      MultithreadInfo::set_thread_limit(parameters.run.threads);
+    for (const auto &body : parameters.bodies)
+      materials.push_back(
+        create_material<dim>(body.material.model, body.material.moduli()));
+    create_bodies();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::create_bodies()
+  {
+    using Layout = ParticleLayout<dim>;
+    std::vector<std::vector<Point<dim>>> samples;
+    for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+      {
+        const BodyParameters<dim> &body = parameters.bodies[b];
+        const std::string where = parameter_file + ": subsection 'body " +
+                                  std::to_string(b) + "'";
+        samples.push_back(BodySampler<dim>(body, grid.lattice()).sample());
+        if (samples.back().empty())
+          throw InputError(where +
+                           ": the shape contains no particle (it is empty, "
+                           "or smaller than a sub-cell of size dx / "
+                           "'particles per cell')");
+        for (const Point<dim> &x : samples.back())
+          if (!grid.stencil_inside(x))
+            throw InputError(
+              where + ": the body reaches outside the grid (particle at " +
+              to_input_string(x) +
+              "); every particle's kernel stencil must lie inside "
+              "'grid/lower corner' .. 'grid/upper corner'");
+      }
+
+    // Bodies must not overlap at t = 0 (BFEMP Section 2, eq. 15 assumes
+    // disjoint undeformed domains).
+    for (unsigned int a = 0; a < samples.size(); ++a)
+      {
+        const Shape<dim> shape(parameters.bodies[a].primitives);
+        for (unsigned int b = 0; b < samples.size(); ++b)
+          if (b != a)
+            for (const Point<dim> &x : samples[b])
+              if (shape.contains_strictly(x))
+                throw InputError(parameter_file + ": bodies " +
+                                 std::to_string(a) + " and " +
+                                 std::to_string(b) +
+                                 " overlap at t = 0 (a particle of body " +
+                                 std::to_string(b) + " at " +
+                                 to_input_string(x) +
+                                 " lies inside body " + std::to_string(a) +
+                                 "); bodies must start apart");
+      }
+
+    std::vector<double> properties(Layout::n_properties);
+    for (unsigned int b = 0; b < samples.size(); ++b)
+      {
+        const BodyParameters<dim> &body = parameters.bodies[b];
+        const double volume = BodySampler<dim>(body, grid.lattice()).particle_volume();
+        const ArrayView<double> p = make_array_view(properties);
+        std::fill(properties.begin(), properties.end(), 0.);
+        p[Layout::mass]        = body.material.density * volume;
+        p[Layout::rest_volume] = volume;
+        Layout::set_vector(p, Layout::velocity, body.initial_velocity);
+        Layout::set_tensor(p,
+                           Layout::deformation_gradient,
+                           unit_symmetric_tensor<dim>());
+        p[Layout::material_id] = b;
+        p[Layout::body_id]     = b;
+        for (const Point<dim> &x : samples[b])
+          {
+            Layout::set_vector(p, Layout::initial_position, x);
+            particle_system.insert(x, p);
+          }
+      }
+    particle_system.finish_insertion();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulation<dim>::cfl_time_scale(const double max_speed) const
+  {
+    double wave_speed = 0.;
+    for (unsigned int b = 0; b < materials.size(); ++b)
+      wave_speed = std::max(wave_speed,
+                            materials[b]->p_wave_speed(
+                              parameters.bodies[b].material.density));
+    return grid.lattice().dx / (wave_speed + max_speed);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulation<dim>::next_time_step(const double time,
+                                  const double max_speed) const
+  {
+    const TimeParameters &p          = parameters.time;
+    const double          time_scale = cfl_time_scale(max_speed);
+    double                dt =
+      p.adaptive ? std::min(p.cfl_number * time_scale, p.maximum_time_step) :
+                   p.time_step;
+    if (dt / time_scale > p.maximum_cfl_number)
+      {
+        std::ostringstream message;
+        message << "step " << step + 1 << ", t = " << time
+                << ": the fixed time step " << dt
+                << " s exceeds the explicit stability limit: its CFL number "
+                   "dt (c_p + max |v_p|) / dx = "
+                << dt / time_scale << " > 'time/maximum CFL number' = "
+                << p.maximum_cfl_number << "; use a time step <= "
+                << p.maximum_cfl_number * time_scale
+                << " s or 'time step mode = CFL'";
+        throw SimulationError(message.str());
+      }
+    // Land exactly on the end time instead of overshooting it.
+    const double remaining = parameters.run.end_time - time;
+    if (dt > remaining || remaining - dt < 1e-6 * dt)
+      dt = remaining;
+    return dt;
+  }
+
+
+
+  template <int dim>
+  StepDiagnostics<dim>
+  Simulation<dim>::diagnostics() const
+  {
+    return StepDiagnostics<dim>::measure(particle_system,
+                                         materials,
+                                         transfer,
+                                         parameters.gravity);
+  }
+
+
+
+  template <int dim>
+  const ParticleSystem<dim> &
+  Simulation<dim>::particles() const
+  {
+    return particle_system;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::check_state(const StepDiagnostics<dim> &d) const
+  {
+    if (!d.finite || !(d.min_J > 0.))
+      {
+        std::ostringstream message;
+        message << "step " << step << ": the particle state became "
+                << (!d.finite ? "non-finite (NaN or inf)" :
+                                "inverted (min det F = ")
+                << (d.finite ? std::to_string(d.min_J) + ")" : "")
+                << "; the step is not written. Reduce the time step or the "
+                   "CFL number.";
+        throw SimulationError(message.str());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::write_snapshot(const double time)
+  {
+    if (particle_output)
+      particle_output->write(particle_system, time, snapshot);
+    if (grid_output)
+      grid_output->write(integrator.grid_state(), time, snapshot);
+    ++snapshot;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::print_test_summary(const double                time,
+                                      const StepDiagnostics<dim> &d) const
+  {
+    console << std::scientific << std::setprecision(6) << "t " << time
+            << " E_kin " << d.kinetic_energy << " E_el " << d.elastic_energy
+            << " E_grav " << d.gravitational_energy << " p";
+    for (unsigned int c = 0; c < dim; ++c)
+      console << ' ' << d.linear_momentum[c];
+    console << " min_J " << d.min_J << std::defaultfloat << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::run()
+  {
+    const RunParameters &run = parameters.run;
+    output_folder = parameters.output.directory + "/" + run.name;
+    std::filesystem::create_directories(output_folder);
+    std::filesystem::copy_file(parameter_file,
+                               output_folder + "/input.prm",
+                               std::filesystem::copy_options::overwrite_existing);
+    if (parameters.output.write_particles)
+      particle_output =
+        std::make_unique<ParticleOutput<dim>>(output_folder, materials);
+    if (parameters.output.write_grid)
+      grid_output = std::make_unique<GridOutput<dim>>(output_folder, grid);
+    DiagnosticsWriter<dim> diagnostics_writer(output_folder + "/diagnostics.csv");
+    ProgressReporter progress(console,
+                              run.end_time,
+                              !run.quiet && !run.test_mode);
+
+    if (run.test_mode)
+      console << "bfemp test run: " << dim << "D, "
+              << particle_system.n_particles() << " particles, "
+              << grid.lattice().n_nodes << " grid nodes" << std::endl;
+    else
+      console << "bfemp: " << dim << "D, " << particle_system.n_particles()
+              << " particles, " << grid.lattice().n_nodes
+              << " grid nodes; output in " << output_folder << std::endl;
+
+    double               time = 0.;
+    StepDiagnostics<dim> state = diagnostics();
+    check_state(state);
+    diagnostics_writer.write(step, time, 0., state, progress.wall_time());
+    write_snapshot(time);
+    if (run.test_mode)
+      print_test_summary(time, state);
+
+    double next_output = parameters.output.interval;
+    while (time < run.end_time)
+      {
+        const double dt = next_time_step(time, state.max_speed);
+        integrator.step(dt, time);
+        time = (dt == run.end_time - time) ? run.end_time : time + dt;
+        ++step;
+
+        const bool snapshot_due = time >= next_output - 1e-9 * dt ||
+                                  time >= run.end_time;
+        if (snapshot_due || step % parameters.output.diagnostics_interval == 0)
+          {
+            state = diagnostics();
+            check_state(state);
+            diagnostics_writer.write(step, time, dt, state, progress.wall_time());
+          }
+        if (snapshot_due)
+          {
+            write_snapshot(time);
+            if (run.test_mode)
+              print_test_summary(time, state);
+            while (next_output <= time + 1e-9 * dt)
+              next_output += std::max(parameters.output.interval, dt);
+          }
+        progress.report(step, time, dt);
+      }
+    if (!run.test_mode)
+      console << "bfemp: finished " << step << " steps in "
+              << progress.wall_time() << " s" << std::endl;
+  }
+
+
+
+  template class Simulation<2>;
+  template class Simulation<3>;
+} // namespace bfemp

@@ -1,0 +1,255 @@
+#include <bfemp/grid/kernel_stencil.h>
+#include <bfemp/transfer/particle_grid_transfer.h>
+
+namespace bfemp
+{
+  template <int dim>
+  ParticleGridTransfer<dim>::ParticleGridTransfer(
+    const BackgroundGrid<dim>                          &grid,
+    const TransferParameters                           &parameters,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials)
+    : grid(grid)
+    , parameters(parameters)
+    , materials(materials)
+  {}
+
+
+
+  template <int dim>
+  template <int degree>
+  void
+  ParticleGridTransfer<dim>::scatter(ParticleSystem<dim> &particles,
+                                     GridState<dim>      &grid_state,
+                                     const bool           with_momentum,
+                                     const bool           with_stress) const
+  {
+    using Layout                = ParticleLayout<dim>;
+    const Lattice<dim> &lattice = grid.lattice();
+    const bool          affine =
+      parameters.scheme == TransferParameters::Scheme::apic;
+
+    particles.for_each_scattering([&](auto &particle) {
+      const ArrayView<const double> p = particle.get_properties();
+      const Point<dim>              x = particle.get_location();
+      KernelStencil<dim, degree>    stencil;
+      stencil.reinit(lattice, x);
+
+      const double         m = p[Layout::mass];
+      const Tensor<1, dim> v = Layout::get_vector(p, Layout::velocity);
+      Tensor<2, dim>       C;
+      if (affine)
+        C = Layout::get_tensor(p, Layout::affine_velocity);
+      // -V^0 P F^T: the Kirchhoff stress times the rest volume.
+      Tensor<2, dim> stress;
+      if (with_stress)
+        {
+          const Tensor<2, dim> F =
+            Layout::get_tensor(p, Layout::deformation_gradient);
+          const auto &material =
+            *materials[static_cast<unsigned int>(p[Layout::material_id])];
+          stress = -p[Layout::rest_volume] *
+                   material.first_piola_kirchhoff(F) * transpose(F);
+        }
+
+      stencil.for_each_node(lattice, x, [&](const std::size_t    node,
+                                            const double          w,
+                                            const Tensor<1, dim> &grad_w,
+                                            const Tensor<1, dim> &r) {
+        if (with_momentum)
+          {
+            grid_state.mass[node] += w * m;
+            grid_state.velocity[node] += (w * m) * (affine ? v + C * r : v);
+          }
+        if (with_stress)
+          grid_state.force[node] += stress * grad_w;
+      });
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleGridTransfer<dim>::particles_to_grid(ParticleSystem<dim> &particles,
+                                               GridState<dim>      &grid_state,
+                                               const bool with_stress) const
+  {
+    dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
+      scatter<decltype(degree)::value>(particles, grid_state, true, with_stress);
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleGridTransfer<dim>::stress_to_grid(ParticleSystem<dim> &particles,
+                                            GridState<dim> &grid_state) const
+  {
+    dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
+      scatter<decltype(degree)::value>(particles, grid_state, false, true);
+    });
+  }
+
+
+
+  template <int dim>
+  template <int degree>
+  void
+  ParticleGridTransfer<dim>::gather(ParticleSystem<dim>  &particles,
+                                    const GridState<dim> &grid_state,
+                                    const bool update_deformation_gradient) const
+  {
+    using Layout                = ParticleLayout<dim>;
+    using Scheme                = TransferParameters::Scheme;
+    const Lattice<dim> &lattice = grid.lattice();
+    const Scheme        scheme  = parameters.scheme;
+    const double        theta   = parameters.pic_blend;
+    const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
+    // D_p^-1 of Table 1 is a constant multiple of I for degree 2 and 3.
+    const double inverse_inertia =
+      degree == 2 ? 4. / (lattice.dx * lattice.dx) :
+                    3. / (lattice.dx * lattice.dx);
+
+    particles.for_each([&](auto &particle) {
+      const ArrayView<double> p = particle.get_properties();
+      const Point<dim>        x = particle.get_location();
+      KernelStencil<dim, degree> stencil;
+      stencil.reinit(lattice, x);
+
+      // Sums over the stencil: v_PIC = sum w v~, the FLIP increment, the
+      // position change delta = sum w u, grad u = sum u grad w^T, and the two
+      // halves of B_p in Table 1 (with x~_i - x_p^{n+1} = r + u - delta).
+      Tensor<1, dim> v_pic, v_old, delta;
+      Tensor<2, dim> grad_u, B_first, B_second, grad_v;
+      stencil.for_each_node(lattice, x, [&](const std::size_t    node,
+                                            const double          w,
+                                            const Tensor<1, dim> &grad_w,
+                                            const Tensor<1, dim> &r) {
+        const Tensor<1, dim> &v_new = grid_state.new_velocity[node];
+        const Tensor<1, dim> &u     = grid_state.displacement[node];
+        v_pic += w * v_new;
+        delta += w * u;
+        grad_u += outer_product(u, grad_w);
+        if (scheme == Scheme::flip)
+          v_old += w * grid_state.velocity[node];
+        else if (scheme == Scheme::apic)
+          {
+            if (degree == 1)
+              grad_v += outer_product(v_new, grad_w);
+            else
+              {
+                B_first += outer_product(w * v_new, 2. * r + u);
+                B_second += outer_product(w * u, v_new);
+              }
+          }
+      });
+
+      Tensor<1, dim> v_new = v_pic;
+      if (scheme == Scheme::flip)
+        {
+          const Tensor<1, dim> v_flip =
+            Layout::get_vector(p, Layout::velocity) + v_pic - v_old;
+          v_new = theta * v_pic + (1. - theta) * v_flip;
+        }
+      else if (scheme == Scheme::apic)
+        {
+          // Multilinear kernels: B D^-1 reduces to the velocity gradient
+          // (Jiang et al. 2015), which stays finite where D_p is singular.
+          const Tensor<2, dim> C =
+            degree == 1 ?
+              grad_v :
+              0.5 *
+                (B_first - outer_product(v_pic, delta) - B_second +
+                 outer_product(delta, v_pic)) *
+                inverse_inertia;
+          Layout::set_tensor(p, Layout::affine_velocity, C);
+        }
+      Layout::set_vector(p, Layout::velocity, v_new);
+      if (update_deformation_gradient)
+        Layout::set_tensor(p,
+                           Layout::deformation_gradient,
+                           (identity + grad_u) *
+                             Layout::get_tensor(p,
+                                                Layout::deformation_gradient));
+      particle.set_location(x + delta);
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleGridTransfer<dim>::grid_to_particles(
+    ParticleSystem<dim>  &particles,
+    const GridState<dim> &grid_state,
+    const bool            update_deformation_gradient) const
+  {
+    dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
+      gather<decltype(degree)::value>(particles,
+                                      grid_state,
+                                      update_deformation_gradient);
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleGridTransfer<dim>::update_deformation_gradient(
+    ParticleSystem<dim>               &particles,
+    const std::vector<Tensor<1, dim>> &grid_displacement) const
+  {
+    using Layout                = ParticleLayout<dim>;
+    const Lattice<dim> &lattice = grid.lattice();
+    dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree_constant) {
+      constexpr int degree = decltype(degree_constant)::value;
+      particles.for_each([&](auto &particle) {
+        const ArrayView<double>    p = particle.get_properties();
+        const Point<dim>           x = particle.get_location();
+        KernelStencil<dim, degree> stencil;
+        stencil.reinit(lattice, x);
+        Tensor<2, dim> F_increment = unit_symmetric_tensor<dim>();
+        stencil.for_each_node(lattice, x, [&](const std::size_t node,
+                                              const double,
+                                              const Tensor<1, dim> &grad_w,
+                                              const Tensor<1, dim> &) {
+          F_increment += outer_product(grid_displacement[node], grad_w);
+        });
+        Layout::set_tensor(p,
+                           Layout::deformation_gradient,
+                           F_increment *
+                             Layout::get_tensor(p,
+                                                Layout::deformation_gradient));
+      });
+    });
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  ParticleGridTransfer<dim>::apic_inertia(const Point<dim> &x) const
+  {
+    const double   dx2 = grid.lattice().dx * grid.lattice().dx;
+    Tensor<2, dim> D;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (grid.kernel_degree() == 2)
+        D[d][d] = dx2 / 4.;
+      else if (grid.kernel_degree() == 3)
+        D[d][d] = dx2 / 3.;
+      else
+        {
+          const double xi =
+            (x[d] - grid.lattice().origin[d]) * grid.lattice().inverse_dx;
+          const double t = xi - std::floor(xi);
+          D[d][d]        = dx2 * t * (1. - t);
+        }
+    return D;
+  }
+
+
+
+  template class ParticleGridTransfer<2>;
+  template class ParticleGridTransfer<3>;
+} // namespace bfemp
