@@ -51,7 +51,7 @@ namespace bfemp
     std::string
     components(const double x, const double y, const double z)
     {
-      const double values[3] = {x, y, z};
+      const double       values[3] = {x, y, z};
       std::ostringstream result;
       for (unsigned int d = 0; d < dim; ++d)
         result << (d > 0 ? ", " : "") << values[d];

@@ -84,7 +84,8 @@ namespace bfemp
                         "boundaries",
                         "walls",
                         "'" + walls + "'",
-                        "allowed: all, none, or a list of x-, x+, y-, y+" +
+                        "unknown face '" + name +
+                          "'; allowed: all, none, or a list of x-, x+, y-, y+" +
                           std::string(dim == 3 ? ", z-, z+" : ""));
         }
     wall_condition.type =
@@ -124,8 +125,7 @@ namespace bfemp
             if (wall_active[2 * d] && index[d] <= static_cast<int>(layers))
               inward[d] = 1.;
             else if (wall_active[2 * d + 1] &&
-                     index[d] >=
-                       static_cast<int>(lattice.n_cells[d] - layers))
+                     index[d] >= static_cast<int>(lattice.n_cells[d] - layers))
               inward[d] = -1.;
             if (inward.norm_square() > 0.)
               wall_condition.apply(velocity[node], inward, at_rest);

@@ -49,10 +49,7 @@ namespace bfemp
                       "0.1",
                       Patterns::Double(),
                       "[m] Sine wave: L (> 0).");
-    prm.declare_entry("offset",
-                      "0.1",
-                      Patterns::Double(),
-                      "[m] Sine wave: c.");
+    prm.declare_entry("offset", "0.1", Patterns::Double(), "[m] Sine wave: c.");
     prm.declare_entry("solid side",
                       "below",
                       Patterns::Selection("below|above"),
@@ -73,9 +70,9 @@ namespace bfemp
   {
     using namespace parameter_tools;
     const std::string name = prm.get("type");
-    type = name == "half-plane" ? Type::half_plane :
-           name == "box"        ? Type::box :
-                                  Type::sine_wave;
+    type                   = name == "half-plane" ? Type::half_plane
+                             : name == "box"      ? Type::box
+                                                  : Type::sine_wave;
     boundary_condition.type =
       BoundaryCondition::parse_type(prm.get("condition"));
     boundary_condition.friction = prm.get_double("friction");

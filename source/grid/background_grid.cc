@@ -22,6 +22,15 @@ namespace bfemp
                                               repetitions,
                                               parameters.lower_corner,
                                               parameters.upper_corner);
+    // A stencil's first node is floor(xi - margin), its last that plus the
+    // degree; both must exist: xi in [margin, n - margin).
+    const double margin = 0.5 * (degree - 1);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        usable_lower[d] = lattice_.node_coordinate(d, 0) + margin * lattice_.dx;
+        usable_upper[d] =
+          lattice_.node_coordinate(d, n[d]) - margin * lattice_.dx;
+      }
     dofs_node.distribute_dofs(fe_node);
     dofs_vector.distribute_dofs(fe_vector);
 
@@ -37,8 +46,9 @@ namespace bfemp
           {
             std::array<int, dim> index;
             for (unsigned int d = 0; d < dim; ++d)
-              index[d] = static_cast<int>(std::round(
-                (cell->vertex(v)[d] - lattice_.origin[d]) * lattice_.inverse_dx));
+              index[d] = static_cast<int>(
+                std::round((cell->vertex(v)[d] - lattice_.origin[d]) *
+                           lattice_.inverse_dx));
             const std::size_t node = lattice_.node_index(index);
             node_dofs[node]        = cell->vertex_dof_index(v, 0);
             for (unsigned int c = 0; c < dim; ++c)
@@ -145,19 +155,10 @@ namespace bfemp
   bool
   BackgroundGrid<dim>::stencil_inside(const Point<dim> &x) const
   {
-    return dispatch_kernel_degree(degree, [&](auto degree_constant) {
-      using Kernel = BSplineKernel<decltype(degree_constant)::value>;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double xi = (x[d] - lattice_.origin[d]) * lattice_.inverse_dx;
-          const int    first = Kernel::first_node(xi);
-          if (!(xi >= 0.) || first < 0 ||
-              first + static_cast<int>(Kernel::n_nodes_1d) - 1 >
-                static_cast<int>(lattice_.n_cells[d]))
-            return false;
-        }
-      return true;
-    });
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!(x[d] >= usable_lower[d] && x[d] < usable_upper[d]))
+        return false;
+    return true;
   }
 
 

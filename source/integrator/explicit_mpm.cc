@@ -43,8 +43,9 @@ namespace bfemp
   void
   ExplicitMPM<dim>::momentum_to_velocity()
   {
-    for_each_node(
-      [&](const std::size_t node) { state.velocity[node] /= state.mass[node]; });
+    for_each_node([&](const std::size_t node) {
+      state.velocity[node] /= state.mass[node];
+    });
   }
 
 
@@ -55,7 +56,8 @@ namespace bfemp
   {
     for_each_node([&](const std::size_t node) {
       state.new_velocity[node] =
-        state.velocity[node] + dt * (state.force[node] / state.mass[node] + gravity);
+        state.velocity[node] +
+        dt * (state.force[node] / state.mass[node] + gravity);
     });
     boundaries.apply(grid.lattice(), state.mass, state.new_velocity, time + dt);
   }
@@ -64,11 +66,13 @@ namespace bfemp
 
   template <int dim>
   void
-  ExplicitMPM<dim>::set_displacement(const std::vector<Tensor<1, dim>> &velocity,
-                                     const double                       dt)
+  ExplicitMPM<dim>::set_displacement(
+    const std::vector<Tensor<1, dim>> &velocity,
+    const double                       dt)
   {
-    for_each_node(
-      [&](const std::size_t node) { state.displacement[node] = dt * velocity[node]; });
+    for_each_node([&](const std::size_t node) {
+      state.displacement[node] = dt * velocity[node];
+    });
   }
 
 

@@ -46,9 +46,9 @@ namespace bfemp
   TimeParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("time");
-    integrator = prm.get("integrator") == "explicit USL" ?
-                   Integrator::explicit_usl :
-                   Integrator::explicit_usf;
+    integrator         = prm.get("integrator") == "explicit USL"
+                           ? Integrator::explicit_usl
+                           : Integrator::explicit_usf;
     adaptive           = prm.get("time step mode") == "CFL";
     time_step          = prm.get_double("time step");
     cfl_number         = prm.get_double("CFL number");

@@ -35,7 +35,9 @@ namespace bfemp
     // Masses are indexed by DoF, so go through the DoFHandler's cells.
     const auto has_mass = [&](const cell_iterator &cell) {
       const typename DoFHandler<dim>::active_cell_iterator dof_cell(
-        &grid.triangulation(), cell->level(), cell->index(),
+        &grid.triangulation(),
+        cell->level(),
+        cell->index(),
         &grid.node_dof_handler());
       for (const unsigned int v : dof_cell->vertex_indices())
         if (mass[dof_cell->vertex_dof_index(v, 0)] > 0.)
@@ -59,7 +61,8 @@ namespace bfemp
       });
     data_out.add_data_vector(grid.node_dof_handler(), mass, "mass");
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_kind(dim, DataComponentInterpretation::component_is_part_of_vector);
+      vector_kind(dim,
+                  DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(grid.vector_dof_handler(),
                              velocity,
                              std::vector<std::string>(dim, "velocity"),

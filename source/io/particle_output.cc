@@ -8,7 +8,7 @@ namespace bfemp
 {
   template <int dim>
   ParticleOutput<dim>::ParticleOutput(
-    const std::string                                  &folder,
+    const std::string                                 &folder,
     const std::vector<std::unique_ptr<Material<dim>>> &materials)
     : folder(folder)
     , materials(materials)
@@ -41,31 +41,41 @@ namespace bfemp
   {
     using Layout = ParticleLayout<dim>;
     std::vector<std::string> names;
-    auto                     add_names = [&](const std::string &name,
-                         const unsigned int n) {
+    auto add_names = [&](const std::string &name, const unsigned int n) {
       for (unsigned int i = 0; i < n; ++i)
         names.push_back(name);
     };
     add_names("velocity", dim);
     add_names("displacement", dim);
     add_names("cauchy_stress", dim * dim);
-    for (const char *name : {"von_mises", "J", "mass", "material_id", "body_id"})
+    for (const char *name :
+         {"von_mises", "J", "mass", "material_id", "body_id"})
       names.push_back(name);
 
-    using Range = std::tuple<unsigned int,
-                             unsigned int,
-                             std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>;
+    using Range =
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>;
     const std::vector<Range> ranges = {
-      Range(0, dim - 1, "velocity", DataComponentInterpretation::component_is_part_of_vector),
-      Range(dim, 2 * dim - 1, "displacement", DataComponentInterpretation::component_is_part_of_vector),
-      Range(2 * dim, 2 * dim + dim * dim - 1, "cauchy_stress", DataComponentInterpretation::component_is_part_of_tensor)};
+      Range(0,
+            dim - 1,
+            "velocity",
+            DataComponentInterpretation::component_is_part_of_vector),
+      Range(dim,
+            2 * dim - 1,
+            "displacement",
+            DataComponentInterpretation::component_is_part_of_vector),
+      Range(2 * dim,
+            2 * dim + dim * dim - 1,
+            "cauchy_stress",
+            DataComponentInterpretation::component_is_part_of_tensor)};
 
     std::vector<DataOutBase::Patch<0, dim>> patches;
     patches.reserve(particles.n_particles());
     for (const auto &particle : particles.handler())
       {
-        const auto p = particle.get_properties();
+        const auto                 p = particle.get_properties();
         DataOutBase::Patch<0, dim> patch;
         patch.vertices[0]          = particle.get_location();
         patch.patch_index          = patches.size();

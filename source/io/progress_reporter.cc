@@ -32,12 +32,13 @@ namespace bfemp
   {
     if (!enabled)
       return;
-    const double elapsed   = wall_time();
-    const double remaining = time > 0. ? elapsed * (end_time - time) / time : 0.;
+    const double elapsed = wall_time();
+    const double remaining =
+      time > 0. ? elapsed * (end_time - time) / time : 0.;
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
-        << std::scientific << std::setprecision(4) << time
-        << "  dt = " << dt << std::defaultfloat << std::fixed
-        << std::setprecision(1) << "  wall " << elapsed << " s  left ~"
-        << remaining << " s" << std::defaultfloat << std::endl;
+        << std::scientific << std::setprecision(4) << time << "  dt = " << dt
+        << std::defaultfloat << std::fixed << std::setprecision(1) << "  wall "
+        << elapsed << " s  left ~" << remaining << " s" << std::defaultfloat
+        << std::endl;
   }
 } // namespace bfemp

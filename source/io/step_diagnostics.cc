@@ -37,9 +37,9 @@ namespace bfemp
     template <int dim>
     Tensor<1, 3>
     particle_angular_momentum(const double          m,
-                     const Point<dim>     &x,
-                     const Tensor<1, dim> &v,
-                     const Tensor<2, dim> &B)
+                              const Point<dim>     &x,
+                              const Tensor<1, dim> &v,
+                              const Tensor<2, dim> &B)
     {
       Tensor<1, 3> L;
       if constexpr (dim == 2)
@@ -62,10 +62,10 @@ namespace bfemp
   template <int dim>
   StepDiagnostics<dim>
   StepDiagnostics<dim>::measure(
-    const ParticleSystem<dim>                          &particles,
+    const ParticleSystem<dim>                         &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
-    const ParticleGridTransfer<dim>                    &transfer,
-    const Tensor<1, dim>                               &gravity)
+    const ParticleGridTransfer<dim>                   &transfer,
+    const Tensor<1, dim>                              &gravity)
   {
     using Layout = ParticleLayout<dim>;
     return particles.template sum<StepDiagnostics<dim>>(
@@ -83,9 +83,9 @@ namespace bfemp
           *materials[static_cast<unsigned int>(p[Layout::material_id])];
 
         StepDiagnostics<dim> d;
-        d.mass                 = m;
-        d.kinetic_energy       = 0.5 * m * v.norm_square();
-        d.elastic_energy       = p[Layout::rest_volume] * material.energy_density(F);
+        d.mass           = m;
+        d.kinetic_energy = 0.5 * m * v.norm_square();
+        d.elastic_energy = p[Layout::rest_volume] * material.energy_density(F);
         d.gravitational_energy = -m * (gravity * x);
         d.linear_momentum      = m * v;
         d.angular_momentum     = particle_angular_momentum(m, x, v, B);

@@ -41,7 +41,9 @@ namespace bfemp
   {
     const auto cell = grid.lattice().cell_of(x);
     particle_handler.insert_particle(x,
-                                     reference_location<dim>(grid.lattice(), cell, x),
+                                     reference_location<dim>(grid.lattice(),
+                                                             cell,
+                                                             x),
                                      next_id++,
                                      grid.cell(cell),
                                      properties);
@@ -55,6 +57,48 @@ namespace bfemp
   {
     particle_handler.update_cached_numbers();
     rebuild_stripes();
+    store_in_loop_order();
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::store_in_loop_order()
+  {
+    // Particle data lives in deal.II's PropertyPool in the order particles
+    // were inserted; after many cell changes a loop over cells jumps around
+    // memory and is bound by cache misses. Re-inserting every particle in
+    // loop order makes the loops stream through memory again.
+    const unsigned int                 n_properties = Layout::n_properties;
+    std::vector<double>                buffer;
+    std::vector<types::particle_index> ids;
+    std::vector<Point<dim>>            locations;
+    buffer.reserve(particle_handler.n_locally_owned_particles() * n_properties);
+    for (const auto &stripe : stripes)
+      for (const auto &cell : stripe)
+        for (const auto &particle : particle_handler.particles_in_cell(cell))
+          {
+            const auto properties = particle.get_properties();
+            buffer.insert(buffer.end(), properties.begin(), properties.end());
+            ids.push_back(particle.get_id());
+            locations.push_back(particle.get_location());
+          }
+    particle_handler.clear_particles();
+    const Lattice<dim> &lattice = grid.lattice();
+    for (std::size_t k = 0; k < ids.size(); ++k)
+      {
+        const auto cell = lattice.cell_of(locations[k]);
+        particle_handler.insert_particle(
+          locations[k],
+          reference_location<dim>(lattice, cell, locations[k]),
+          ids[k],
+          grid.cell(cell),
+          ArrayView<const double>(buffer.data() + k * n_properties,
+                                  n_properties));
+      }
+    particle_handler.update_cached_numbers();
+    moved_since_ordering = 0;
   }
 
 
@@ -115,7 +159,7 @@ namespace bfemp
   void
   ParticleSystem<dim>::update_cells()
   {
-    using particle_iterator = Particles::ParticleIterator<dim>;
+    using particle_iterator     = Particles::ParticleIterator<dim>;
     const Lattice<dim> &lattice = grid.lattice();
 
     std::vector<std::vector<particle_iterator>> movers(stripes.size());
@@ -168,10 +212,10 @@ namespace bfemp
       for (const auto &it : list)
         {
           const auto properties = it->get_properties();
-          moved.push_back({it->get_location(),
-                           it->get_id(),
-                           std::vector<double>(properties.begin(),
-                                               properties.end())});
+          moved.push_back(
+            {it->get_location(),
+             it->get_id(),
+             std::vector<double>(properties.begin(), properties.end())});
           removed.push_back(it);
         }
     if (moved.empty())
@@ -182,14 +226,17 @@ namespace bfemp
         const auto cell = lattice.cell_of(m.location);
         particle_handler.insert_particle(m.location,
                                          reference_location<dim>(lattice,
-                                                            cell,
-                                                            m.location),
+                                                                 cell,
+                                                                 m.location),
                                          m.id,
                                          grid.cell(cell),
                                          make_array_view(m.properties));
       }
     particle_handler.update_cached_numbers();
     rebuild_stripes();
+    moved_since_ordering += moved.size();
+    if (moved_since_ordering > n_particles() / 4)
+      store_in_loop_order();
   }
 
 

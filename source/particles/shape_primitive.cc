@@ -60,17 +60,17 @@ namespace bfemp
   {
     using namespace parameter_tools;
     const std::string name = prm.get("type");
-    type         = (name == "box")                  ? Type::box :
-                   (name == "ball" || name == "disk") ? Type::ball :
-                   (name == "shell" || name == "ring") ? Type::shell :
-                                                         Type::semi_shell;
-    subtract     = prm.get("operation") == "subtract";
-    lower_corner = get_point<dim>(prm, "lower corner");
-    upper_corner = get_point<dim>(prm, "upper corner");
-    center       = get_point<dim>(prm, "center");
-    inner_radius = prm.get_double("inner radius");
-    outer_radius = prm.get_double("outer radius");
-    direction    = get_vector<dim>(prm, "direction");
+    type                   = (name == "box")                       ? Type::box
+                             : (name == "ball" || name == "disk")  ? Type::ball
+                             : (name == "shell" || name == "ring") ? Type::shell
+                                                                   : Type::semi_shell;
+    subtract               = prm.get("operation") == "subtract";
+    lower_corner           = get_point<dim>(prm, "lower corner");
+    upper_corner           = get_point<dim>(prm, "upper corner");
+    center                 = get_point<dim>(prm, "center");
+    inner_radius           = prm.get_double("inner radius");
+    outer_radius           = prm.get_double("outer radius");
+    direction              = get_vector<dim>(prm, "direction");
 
     if (type == Type::box)
       for (unsigned int d = 0; d < dim; ++d)
@@ -79,8 +79,7 @@ namespace bfemp
                       "upper corner",
                       to_input_string(upper_corner),
                       "must exceed 'lower corner' (" +
-                        to_input_string(lower_corner) +
-                        ") in every direction");
+                        to_input_string(lower_corner) + ") in every direction");
     else
       {
         require_input(outer_radius > 0.,
@@ -128,9 +127,9 @@ namespace bfemp
             const double r       = x.distance(center);
             double       measure = std::max(r - outer_radius, inner_radius - r);
             if (type == Type::semi_shell)
-              measure = std::max(measure,
-                                 -((x - center) * direction) /
-                                   direction.norm());
+              measure =
+                std::max(measure,
+                         -((x - center) * direction) / direction.norm());
             return measure;
           }
       }

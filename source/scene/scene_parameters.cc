@@ -2,7 +2,12 @@
 #include <bfemp/base/parameter_tools.h>
 #include <bfemp/scene/scene_parameters.h>
 
+#include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
 
 namespace bfemp
 {
@@ -20,7 +25,8 @@ namespace bfemp
 
   namespace
   {
-    /** deal.II exception text without the source-location preamble. */
+    /** deal.II exception text on one line, without the source-location
+     *  preamble and the stack trace. */
     std::string
     what_deal_ii_says(const std::exception &error)
     {
@@ -29,15 +35,144 @@ namespace bfemp
       const auto        at     = text.find(marker);
       std::string       said =
         at == std::string::npos ? text : text.substr(at + marker.size());
-      const auto end = said.find("\n--------");
-      if (end != std::string::npos)
-        said = said.substr(0, end);
-      while (!said.empty() && (said.back() == '\n' || said.back() == ' '))
-        said.pop_back();
-      for (auto &c : said)
-        if (c == '\n')
-          c = ' ';
-      return said;
+      // The stack trace comes before the closing dashes.
+      for (const char *tail : {"\nStacktrace:", "\n--------"})
+        said = said.substr(0, said.find(tail));
+      std::string one_line;
+      for (const char c : said)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          one_line += c;
+        else if (!one_line.empty() && one_line.back() != ' ')
+          one_line += ' ';
+      if (!one_line.empty() && one_line.back() == ' ')
+        one_line.pop_back();
+      return one_line;
+    }
+
+
+
+    /** A 'set' or 'subsection' line of a prm text, and where it is. */
+    struct PrmStatement
+    {
+      std::vector<std::string> path;
+      bool                     is_entry;
+      std::string              name;
+    };
+
+
+
+    /** The statements in the first @p n_lines lines of @p in; @p path ends
+     *  as the subsection path open after them. */
+    std::vector<PrmStatement>
+    scan_prm(std::istream             &in,
+             const unsigned int        n_lines,
+             std::vector<std::string> &path)
+    {
+      std::vector<PrmStatement> statements;
+      std::string               line;
+      for (unsigned int n = 0; n < n_lines && std::getline(in, line); ++n)
+        {
+          std::istringstream words(line.substr(0, line.find('#')));
+          std::string        keyword, rest, name, word;
+          words >> keyword;
+          std::getline(words, rest);
+          for (auto &c : keyword)
+            c = std::tolower(static_cast<unsigned char>(c));
+          std::istringstream name_words(
+            keyword == "set" ? rest.substr(0, rest.find('=')) : rest);
+          while (name_words >> word)
+            name += (name.empty() ? "" : " ") + word;
+          if (keyword == "set" || keyword == "subsection")
+            statements.push_back({path, keyword == "set", name});
+          if (keyword == "subsection")
+            path.push_back(name);
+          else if (keyword == "end" && !path.empty())
+            path.pop_back();
+        }
+      return statements;
+    }
+
+
+
+    /** The entries (or subsections) that @p prm declares in @p path. */
+    std::string
+    declared_names(const ParameterHandler         &prm,
+                   const std::vector<std::string> &path,
+                   const bool                      entries)
+    {
+      std::stringstream text;
+      prm.print_parameters(
+        text,
+        ParameterHandler::OutputStyle(ParameterHandler::ShortPRM |
+                                      ParameterHandler::KeepDeclarationOrder));
+      std::vector<std::string> end_path;
+      std::string              names;
+      for (const PrmStatement &statement :
+           scan_prm(text, std::numeric_limits<unsigned int>::max(), end_path))
+        if (statement.path == path && statement.is_entry == entries)
+          names += (names.empty() ? "" : ", ") + statement.name;
+      return names.empty() ? "none" : names;
+    }
+
+
+
+    /** deal.II's "Line <n> of file <f>: ..." parse errors as "line n,
+     *  subsection 'a/b', entry 'e' = v: what is allowed". */
+    std::string
+    explain_parse_error(const std::string      &said,
+                        const std::string      &file,
+                        const ParameterHandler &prm)
+    {
+      std::smatch line;
+      if (!std::regex_match(said,
+                            line,
+                            std::regex("Line <([0-9]+)> of file <.*?>?: (.*)")))
+        return said;
+      std::ifstream            in(file);
+      std::vector<std::string> path;
+      scan_prm(in, std::stoi(line[1]) - 1, path);
+      std::string where = "line " + line[1].str() + ", ";
+      if (path.empty())
+        where += "top level";
+      else
+        {
+          where += "subsection '" + path[0];
+          for (unsigned int i = 1; i < path.size(); ++i)
+            where += "/" + path[i];
+          where += "'";
+        }
+      const std::string problem = line[2];
+      std::smatch       m;
+      if (std::regex_match(problem,
+                           m,
+                           std::regex("No entry with name <(.*)> was declared "
+                                      "in the current subsection\\.")))
+        return where + ", entry '" + m[1].str() +
+               "': no such entry; the entries declared there are: " +
+               declared_names(prm, path, true);
+      if (std::regex_match(problem,
+                           m,
+                           std::regex("There is no such subsection to be "
+                                      "entered: (.*)")))
+        {
+          // deal.II names it with its path, "body 0.materials".
+          std::string name = m[1].str(), prefix;
+          for (const std::string &p : path)
+            prefix += p + ".";
+          if (name.rfind(prefix, 0) == 0)
+            name = name.substr(prefix.size());
+          return where + ": no subsection '" + name +
+                 "' is declared there; the subsections declared there are: " +
+                 declared_names(prm, path, false);
+        }
+      if (std::regex_match(problem,
+                           m,
+                           std::regex("The entry value (.*) for the entry "
+                                      "named (.*) does not match the given "
+                                      "pattern: (.*)")))
+        return where + ", entry '" + m[2].str() + "' = " + m[1].str() +
+               ": does not match the allowed pattern " + m[3].str();
+      return where + ": " + problem;
     }
   } // namespace
 
@@ -60,7 +195,8 @@ namespace bfemp
       }
     catch (const std::exception &error)
       {
-        throw InputError(file + ": " + what_deal_ii_says(error));
+        throw InputError(
+          file + ": " + explain_parse_error(what_deal_ii_says(error), file, prm));
       }
   }
 
@@ -152,7 +288,8 @@ namespace bfemp
         declare_parameters(prm, primitives, n_level_sets);
         parse_prm_file(prm, file, true);
         std::vector<unsigned int> found(prm.get_integer("number of bodies"), 1);
-        for (unsigned int b = 0; b < std::min(found.size(), primitives.size()); ++b)
+        for (unsigned int b = 0; b < std::min(found.size(), primitives.size());
+             ++b)
           {
             prm.enter_subsection(parameter_tools::numbered("body", b));
             found[b] = BodyParameters<dim>::parse_number_of_primitives(prm);

@@ -47,8 +47,8 @@ namespace bfemp
     for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
       {
         const BodyParameters<dim> &body = parameters.bodies[b];
-        const std::string where = parameter_file + ": subsection 'body " +
-                                  std::to_string(b) + "'";
+        const std::string          where =
+          parameter_file + ": subsection 'body " + std::to_string(b) + "'";
         samples.push_back(BodySampler<dim>(body, grid.lattice()).sample());
         if (samples.back().empty())
           throw InputError(where +
@@ -73,21 +73,21 @@ namespace bfemp
           if (b != a)
             for (const Point<dim> &x : samples[b])
               if (shape.contains_strictly(x))
-                throw InputError(parameter_file + ": bodies " +
-                                 std::to_string(a) + " and " +
-                                 std::to_string(b) +
-                                 " overlap at t = 0 (a particle of body " +
-                                 std::to_string(b) + " at " +
-                                 to_input_string(x) +
-                                 " lies inside body " + std::to_string(a) +
-                                 "); bodies must start apart");
+                throw InputError(
+                  parameter_file + ": subsections 'body " + std::to_string(a) +
+                  "' and 'body " + std::to_string(b) +
+                  "': the bodies overlap at t = 0 (a particle of body " +
+                  std::to_string(b) + " at " + to_input_string(x) +
+                  " lies inside body " + std::to_string(a) +
+                  "); bodies must start apart");
       }
 
     std::vector<double> properties(Layout::n_properties);
     for (unsigned int b = 0; b < samples.size(); ++b)
       {
         const BodyParameters<dim> &body = parameters.bodies[b];
-        const double volume = BodySampler<dim>(body, grid.lattice()).particle_volume();
+        const double               volume =
+          BodySampler<dim>(body, grid.lattice()).particle_volume();
         const ArrayView<double> p = make_array_view(properties);
         std::fill(properties.begin(), properties.end(), 0.);
         p[Layout::mass]        = body.material.density * volume;
@@ -130,9 +130,9 @@ namespace bfemp
   {
     const TimeParameters &p          = parameters.time;
     const double          time_scale = cfl_time_scale(max_speed);
-    double                dt =
-      p.adaptive ? std::min(p.cfl_number * time_scale, p.maximum_time_step) :
-                   p.time_step;
+    double                dt         = p.adaptive
+                                         ? std::min(p.cfl_number * time_scale, p.maximum_time_step)
+                                         : p.time_step;
     if (dt / time_scale > p.maximum_cfl_number)
       {
         std::ostringstream message;
@@ -140,9 +140,9 @@ namespace bfemp
                 << ": the fixed time step " << dt
                 << " s exceeds the explicit stability limit: its CFL number "
                    "dt (c_p + max |v_p|) / dx = "
-                << dt / time_scale << " > 'time/maximum CFL number' = "
-                << p.maximum_cfl_number << "; use a time step <= "
-                << p.maximum_cfl_number * time_scale
+                << dt / time_scale
+                << " > 'time/maximum CFL number' = " << p.maximum_cfl_number
+                << "; use a time step <= " << p.maximum_cfl_number * time_scale
                 << " s or 'time step mode = CFL'";
         throw SimulationError(message.str());
       }
@@ -177,6 +177,15 @@ namespace bfemp
 
 
   template <int dim>
+  ParticleSystem<dim> &
+  Simulation<dim>::particles()
+  {
+    return particle_system;
+  }
+
+
+
+  template <int dim>
   void
   Simulation<dim>::check_state(const StepDiagnostics<dim> &d) const
   {
@@ -184,8 +193,8 @@ namespace bfemp
       {
         std::ostringstream message;
         message << "step " << step << ": the particle state became "
-                << (!d.finite ? "non-finite (NaN or inf)" :
-                                "inverted (min det F = ")
+                << (!d.finite ? "non-finite (NaN or inf)"
+                              : "inverted (min det F = ")
                 << (d.finite ? std::to_string(d.min_J) + ")" : "")
                 << "; the step is not written. Reduce the time step or the "
                    "CFL number.";
@@ -228,18 +237,20 @@ namespace bfemp
   Simulation<dim>::run()
   {
     const RunParameters &run = parameters.run;
-    output_folder = parameters.output.directory + "/" + run.name;
+    output_folder            = parameters.output.directory + "/" + run.name;
     std::filesystem::create_directories(output_folder);
-    std::filesystem::copy_file(parameter_file,
-                               output_folder + "/input.prm",
-                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(
+      parameter_file,
+      output_folder + "/input.prm",
+      std::filesystem::copy_options::overwrite_existing);
     if (parameters.output.write_particles)
       particle_output =
         std::make_unique<ParticleOutput<dim>>(output_folder, materials);
     if (parameters.output.write_grid)
       grid_output = std::make_unique<GridOutput<dim>>(output_folder, grid);
-    DiagnosticsWriter<dim> diagnostics_writer(output_folder + "/diagnostics.csv");
-    ProgressReporter progress(console,
+    DiagnosticsWriter<dim> diagnostics_writer(output_folder +
+                                              "/diagnostics.csv");
+    ProgressReporter       progress(console,
                               run.end_time,
                               !run.quiet && !run.test_mode);
 
@@ -252,7 +263,7 @@ namespace bfemp
               << " particles, " << grid.lattice().n_nodes
               << " grid nodes; output in " << output_folder << std::endl;
 
-    double               time = 0.;
+    double               time  = 0.;
     StepDiagnostics<dim> state = diagnostics();
     check_state(state);
     diagnostics_writer.write(step, time, 0., state, progress.wall_time());
@@ -268,13 +279,17 @@ namespace bfemp
         time = (dt == run.end_time - time) ? run.end_time : time + dt;
         ++step;
 
-        const bool snapshot_due = time >= next_output - 1e-9 * dt ||
-                                  time >= run.end_time;
+        const bool snapshot_due =
+          time >= next_output - 1e-9 * dt || time >= run.end_time;
         if (snapshot_due || step % parameters.output.diagnostics_interval == 0)
           {
             state = diagnostics();
             check_state(state);
-            diagnostics_writer.write(step, time, dt, state, progress.wall_time());
+            diagnostics_writer.write(step,
+                                     time,
+                                     dt,
+                                     state,
+                                     progress.wall_time());
           }
         if (snapshot_due)
           {

@@ -5,8 +5,8 @@ namespace bfemp
 {
   template <int dim>
   ParticleGridTransfer<dim>::ParticleGridTransfer(
-    const BackgroundGrid<dim>                          &grid,
-    const TransferParameters                           &parameters,
+    const BackgroundGrid<dim>                         &grid,
+    const TransferParameters                          &parameters,
     const std::vector<std::unique_ptr<Material<dim>>> &materials)
     : grid(grid)
     , parameters(parameters)
@@ -25,8 +25,7 @@ namespace bfemp
   {
     using Layout                = ParticleLayout<dim>;
     const Lattice<dim> &lattice = grid.lattice();
-    const bool          affine =
-      parameters.scheme == TransferParameters::Scheme::apic;
+    const bool affine = parameters.scheme == TransferParameters::Scheme::apic;
 
     particles.for_each_scattering([&](auto &particle) {
       const ArrayView<const double> p = particle.get_properties();
@@ -47,22 +46,23 @@ namespace bfemp
             Layout::get_tensor(p, Layout::deformation_gradient);
           const auto &material =
             *materials[static_cast<unsigned int>(p[Layout::material_id])];
-          stress = -p[Layout::rest_volume] *
-                   material.first_piola_kirchhoff(F) * transpose(F);
+          stress = -p[Layout::rest_volume] * material.first_piola_kirchhoff(F) *
+                   transpose(F);
         }
 
-      stencil.for_each_node(lattice, x, [&](const std::size_t    node,
-                                            const double          w,
-                                            const Tensor<1, dim> &grad_w,
-                                            const Tensor<1, dim> &r) {
-        if (with_momentum)
-          {
-            grid_state.mass[node] += w * m;
-            grid_state.velocity[node] += (w * m) * (affine ? v + C * r : v);
-          }
-        if (with_stress)
-          grid_state.force[node] += stress * grad_w;
-      });
+      for (unsigned int k = 0; k < stencil.n_nodes; ++k)
+        {
+          const std::size_t node = stencil.node[k];
+          if (with_momentum)
+            {
+              const double mass_k = stencil.weight[k] * m;
+              grid_state.mass[node] += mass_k;
+              grid_state.velocity[node] +=
+                mass_k * (affine ? v + C * stencil.offset[k] : v);
+            }
+          if (with_stress)
+            grid_state.force[node] += stress * stencil.gradient[k];
+        }
     });
   }
 
@@ -75,7 +75,10 @@ namespace bfemp
                                                const bool with_stress) const
   {
     dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
-      scatter<decltype(degree)::value>(particles, grid_state, true, with_stress);
+      scatter<decltype(degree)::value>(particles,
+                                       grid_state,
+                                       true,
+                                       with_stress);
     });
   }
 
@@ -96,24 +99,24 @@ namespace bfemp
   template <int dim>
   template <int degree>
   void
-  ParticleGridTransfer<dim>::gather(ParticleSystem<dim>  &particles,
-                                    const GridState<dim> &grid_state,
-                                    const bool update_deformation_gradient) const
+  ParticleGridTransfer<dim>::gather(
+    ParticleSystem<dim>  &particles,
+    const GridState<dim> &grid_state,
+    const bool            update_deformation_gradient) const
   {
-    using Layout                = ParticleLayout<dim>;
-    using Scheme                = TransferParameters::Scheme;
-    const Lattice<dim> &lattice = grid.lattice();
-    const Scheme        scheme  = parameters.scheme;
-    const double        theta   = parameters.pic_blend;
+    using Layout                  = ParticleLayout<dim>;
+    using Scheme                  = TransferParameters::Scheme;
+    const Lattice<dim>  &lattice  = grid.lattice();
+    const Scheme         scheme   = parameters.scheme;
+    const double         theta    = parameters.pic_blend;
     const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
     // D_p^-1 of Table 1 is a constant multiple of I for degree 2 and 3.
-    const double inverse_inertia =
-      degree == 2 ? 4. / (lattice.dx * lattice.dx) :
-                    3. / (lattice.dx * lattice.dx);
+    const double inverse_inertia = degree == 2 ? 4. / (lattice.dx * lattice.dx)
+                                               : 3. / (lattice.dx * lattice.dx);
 
     particles.for_each([&](auto &particle) {
-      const ArrayView<double> p = particle.get_properties();
-      const Point<dim>        x = particle.get_location();
+      const ArrayView<double>    p = particle.get_properties();
+      const Point<dim>           x = particle.get_location();
       KernelStencil<dim, degree> stencil;
       stencil.reinit(lattice, x);
 
@@ -122,28 +125,29 @@ namespace bfemp
       // halves of B_p in Table 1 (with x~_i - x_p^{n+1} = r + u - delta).
       Tensor<1, dim> v_pic, v_old, delta;
       Tensor<2, dim> grad_u, B_first, B_second, grad_v;
-      stencil.for_each_node(lattice, x, [&](const std::size_t    node,
-                                            const double          w,
-                                            const Tensor<1, dim> &grad_w,
-                                            const Tensor<1, dim> &r) {
-        const Tensor<1, dim> &v_new = grid_state.new_velocity[node];
-        const Tensor<1, dim> &u     = grid_state.displacement[node];
-        v_pic += w * v_new;
-        delta += w * u;
-        grad_u += outer_product(u, grad_w);
-        if (scheme == Scheme::flip)
-          v_old += w * grid_state.velocity[node];
-        else if (scheme == Scheme::apic)
-          {
-            if (degree == 1)
-              grad_v += outer_product(v_new, grad_w);
-            else
-              {
-                B_first += outer_product(w * v_new, 2. * r + u);
-                B_second += outer_product(w * u, v_new);
-              }
-          }
-      });
+      for (unsigned int k = 0; k < stencil.n_nodes; ++k)
+        {
+          const std::size_t     node  = stencil.node[k];
+          const double          w     = stencil.weight[k];
+          const Tensor<1, dim> &v_new = grid_state.new_velocity[node];
+          const Tensor<1, dim> &u     = grid_state.displacement[node];
+          v_pic += w * v_new;
+          delta += w * u;
+          grad_u += outer_product(u, stencil.gradient[k]);
+          if (scheme == Scheme::flip)
+            v_old += w * grid_state.velocity[node];
+          else if (scheme == Scheme::apic)
+            {
+              if (degree == 1)
+                grad_v += outer_product(v_new, stencil.gradient[k]);
+              else
+                {
+                  B_first +=
+                    outer_product(w * v_new, 2. * stencil.offset[k] + u);
+                  B_second += outer_product(w * u, v_new);
+                }
+            }
+        }
 
       Tensor<1, dim> v_new = v_pic;
       if (scheme == Scheme::flip)
@@ -157,12 +161,11 @@ namespace bfemp
           // Multilinear kernels: B D^-1 reduces to the velocity gradient
           // (Jiang et al. 2015), which stays finite where D_p is singular.
           const Tensor<2, dim> C =
-            degree == 1 ?
-              grad_v :
-              0.5 *
-                (B_first - outer_product(v_pic, delta) - B_second +
-                 outer_product(delta, v_pic)) *
-                inverse_inertia;
+            degree == 1 ? grad_v
+                        : 0.5 *
+                            (B_first - outer_product(v_pic, delta) - B_second +
+                             outer_product(delta, v_pic)) *
+                            inverse_inertia;
           Layout::set_tensor(p, Layout::affine_velocity, C);
         }
       Layout::set_vector(p, Layout::velocity, v_new);
@@ -210,12 +213,9 @@ namespace bfemp
         KernelStencil<dim, degree> stencil;
         stencil.reinit(lattice, x);
         Tensor<2, dim> F_increment = unit_symmetric_tensor<dim>();
-        stencil.for_each_node(lattice, x, [&](const std::size_t node,
-                                              const double,
-                                              const Tensor<1, dim> &grad_w,
-                                              const Tensor<1, dim> &) {
-          F_increment += outer_product(grid_displacement[node], grad_w);
-        });
+        for (unsigned int k = 0; k < stencil.n_nodes; ++k)
+          F_increment += outer_product(grid_displacement[stencil.node[k]],
+                                       stencil.gradient[k]);
         Layout::set_tensor(p,
                            Layout::deformation_gradient,
                            F_increment *

@@ -28,10 +28,10 @@ namespace bfemp
   {
     prm.enter_subsection("transfer");
     const std::string name = prm.get("scheme");
-    scheme    = name == "PIC"  ? Scheme::pic :
-                name == "FLIP" ? Scheme::flip :
-                                 Scheme::apic;
-    pic_blend = prm.get_double("FLIP PIC blend");
+    scheme                 = name == "PIC"    ? Scheme::pic
+                             : name == "FLIP" ? Scheme::flip
+                                              : Scheme::apic;
+    pic_blend              = prm.get_double("FLIP PIC blend");
     prm.leave_subsection();
     require_input(pic_blend >= 0. && pic_blend <= 1.,
                   "transfer",

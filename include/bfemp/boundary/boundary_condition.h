@@ -55,7 +55,7 @@ namespace bfemp
                   // Coulomb: the tangential speed drops by mu |v_n|, and
                   // stops if that is more than it has.
                   const double tangential_speed = relative.norm();
-                  const double reduction = -friction * normal_speed;
+                  const double reduction        = -friction * normal_speed;
                   if (tangential_speed <= reduction)
                     relative = 0;
                   else

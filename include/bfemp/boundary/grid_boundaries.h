@@ -47,10 +47,10 @@ namespace bfemp
 
   private:
     /** wall_active[2 d] is the lower face of direction d, [2 d + 1] upper. */
-    std::array<bool, 2 * dim>    wall_active{};
-    BoundaryCondition            wall_condition;
-    unsigned int                 layers = 2;
-    std::vector<LevelSet<dim>>   level_sets;
+    std::array<bool, 2 * dim>  wall_active{};
+    BoundaryCondition          wall_condition;
+    unsigned int               layers = 2;
+    std::vector<LevelSet<dim>> level_sets;
   };
 } // namespace bfemp
 

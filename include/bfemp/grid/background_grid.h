@@ -72,17 +72,19 @@ namespace bfemp
     stencil_inside(const Point<dim> &x) const;
 
   private:
-    Lattice<dim>                           lattice_;
-    unsigned int                           degree;
-    Triangulation<dim>                     tria;
-    MappingCartesian<dim>                  cartesian_mapping;
-    FE_Q<dim>                              fe_node;
-    FESystem<dim>                          fe_vector;
-    DoFHandler<dim>                        dofs_node;
-    DoFHandler<dim>                        dofs_vector;
-    std::vector<types::global_dof_index>   node_dofs;
-    std::vector<types::global_dof_index>   vector_dofs;
-    std::vector<cell_iterator>             cells;
+    Lattice<dim>                         lattice_;
+    unsigned int                         degree;
+    Triangulation<dim>                   tria;
+    MappingCartesian<dim>                cartesian_mapping;
+    FE_Q<dim>                            fe_node;
+    FESystem<dim>                        fe_vector;
+    DoFHandler<dim>                      dofs_node;
+    DoFHandler<dim>                      dofs_vector;
+    std::vector<types::global_dof_index> node_dofs;
+    std::vector<types::global_dof_index> vector_dofs;
+    std::vector<cell_iterator>           cells;
+    /** Particles must stay in [usable_lower, usable_upper). */
+    Point<dim> usable_lower, usable_upper;
   };
 } // namespace bfemp
 

@@ -12,85 +12,84 @@ namespace bfemp
   using namespace dealii;
 
   /**
-   * The tensor-product kernel weights w_ip = prod_d N(xi_d - i_d) and their
-   * gradients grad w_ip (in 1/m) of one particle, evaluated once and then
-   * visited node by node. Node a of the stencil (0 <= a < n_nodes) has the
-   * lattice multi-index base + (a_0, a_1, ...) with a_0 running fastest.
+   * The tensor-product kernel weights w_ip = prod_d N(xi_d - i_d), their
+   * gradients grad w_ip (in 1/m) and the offsets x_i - x_p of one particle,
+   * evaluated once by reinit() into fixed-size arrays that the transfer loops
+   * then run over. Node a of the stencil has the lattice multi-index base +
+   * (a_0, a_1, ...) with a_0 running fastest.
    */
   template <int dim, int degree>
   class KernelStencil
   {
   public:
-    using Kernel                              = BSplineKernel<degree>;
-    static constexpr unsigned int n_nodes_1d  = Kernel::n_nodes_1d;
-    static constexpr unsigned int n_nodes     = dim == 2 ?
-                                                  n_nodes_1d * n_nodes_1d :
-                                                  n_nodes_1d * n_nodes_1d * n_nodes_1d;
+    using Kernel                             = BSplineKernel<degree>;
+    static constexpr unsigned int n_nodes_1d = Kernel::n_nodes_1d;
+    static constexpr unsigned int n_nodes =
+      dim == 2 ? n_nodes_1d * n_nodes_1d : n_nodes_1d * n_nodes_1d * n_nodes_1d;
 
-    /** Evaluates the 1D factors at particle position x. */
+    /** Evaluates weights, gradients, offsets and node indices at x. */
     inline void
     reinit(const Lattice<dim> &lattice, const Point<dim> &x)
     {
+      double w[dim][n_nodes_1d], dw[dim][n_nodes_1d], r[dim][n_nodes_1d];
+      std::array<int, dim> base;
       for (unsigned int d = 0; d < dim; ++d)
         {
           const double xi = (x[d] - lattice.origin[d]) * lattice.inverse_dx;
           base[d]         = Kernel::evaluate(xi, w[d], dw[d]);
           for (unsigned int a = 0; a < n_nodes_1d; ++a)
-            dw[d][a] *= lattice.inverse_dx;
+            {
+              dw[d][a] *= lattice.inverse_dx;
+              r[d][a] = (base[d] + static_cast<int>(a) - xi) * lattice.dx;
+            }
         }
-      first_node = lattice.node_index(base);
+      const std::size_t first = lattice.node_index(base);
+      unsigned int      k     = 0;
+      if constexpr (dim == 2)
+        for (unsigned int b = 0; b < n_nodes_1d; ++b)
+          for (unsigned int a = 0; a < n_nodes_1d; ++a, ++k)
+            {
+              node[k]        = first + a + b * lattice.stride[1];
+              weight[k]      = w[0][a] * w[1][b];
+              gradient[k][0] = dw[0][a] * w[1][b];
+              gradient[k][1] = w[0][a] * dw[1][b];
+              offset[k][0]   = r[0][a];
+              offset[k][1]   = r[1][b];
+            }
+      else
+        for (unsigned int c = 0; c < n_nodes_1d; ++c)
+          for (unsigned int b = 0; b < n_nodes_1d; ++b)
+            for (unsigned int a = 0; a < n_nodes_1d; ++a, ++k)
+              {
+                node[k] =
+                  first + a + b * lattice.stride[1] + c * lattice.stride[2];
+                weight[k]      = w[0][a] * w[1][b] * w[2][c];
+                gradient[k][0] = dw[0][a] * w[1][b] * w[2][c];
+                gradient[k][1] = w[0][a] * dw[1][b] * w[2][c];
+                gradient[k][2] = w[0][a] * w[1][b] * dw[2][c];
+                offset[k][0]   = r[0][a];
+                offset[k][1]   = r[1][b];
+                offset[k][2]   = r[2][c];
+              }
     }
 
     /** Calls f(node_index, w_ip, grad w_ip, x_i - x_p) for every node. */
     template <typename Function>
     inline void
-    for_each_node(const Lattice<dim> &lattice,
-                  const Point<dim>   &x,
-                  Function          &&f) const
+    for_each_node(const Function &f) const
     {
-      Tensor<1, dim> grad;
-      Tensor<1, dim> offset;
-      if constexpr (dim == 2)
-        for (unsigned int b = 0; b < n_nodes_1d; ++b)
-          {
-            offset[1] = lattice.node_coordinate(1, base[1] + b) - x[1];
-            const std::size_t row = first_node + b * lattice.stride[1];
-            for (unsigned int a = 0; a < n_nodes_1d; ++a)
-              {
-                offset[0] = lattice.node_coordinate(0, base[0] + a) - x[0];
-                grad[0]   = dw[0][a] * w[1][b];
-                grad[1]   = w[0][a] * dw[1][b];
-                f(row + a, w[0][a] * w[1][b], grad, offset);
-              }
-          }
-      else
-        for (unsigned int c = 0; c < n_nodes_1d; ++c)
-          {
-            offset[2] = lattice.node_coordinate(2, base[2] + c) - x[2];
-            for (unsigned int b = 0; b < n_nodes_1d; ++b)
-              {
-                offset[1] = lattice.node_coordinate(1, base[1] + b) - x[1];
-                const double      wbc = w[1][b] * w[2][c];
-                const std::size_t row =
-                  first_node + b * lattice.stride[1] + c * lattice.stride[2];
-                for (unsigned int a = 0; a < n_nodes_1d; ++a)
-                  {
-                    offset[0] =
-                      lattice.node_coordinate(0, base[0] + a) - x[0];
-                    grad[0] = dw[0][a] * wbc;
-                    grad[1] = w[0][a] * dw[1][b] * w[2][c];
-                    grad[2] = w[0][a] * w[1][b] * dw[2][c];
-                    f(row + a, w[0][a] * wbc, grad, offset);
-                  }
-              }
-          }
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        f(node[k], weight[k], gradient[k], offset[k]);
     }
 
-    /** First node of the stencil in every direction. */
-    std::array<int, dim> base;
-    std::size_t          first_node = 0;
-    double               w[dim][n_nodes_1d];
-    double               dw[dim][n_nodes_1d];
+    /** Lattice index of each stencil node. */
+    std::size_t node[n_nodes];
+    /** w_ip. */
+    double weight[n_nodes];
+    /** grad w_ip [1/m]. */
+    Tensor<1, dim> gradient[n_nodes];
+    /** x_i - x_p [m]. */
+    Tensor<1, dim> offset[n_nodes];
   };
 } // namespace bfemp
 

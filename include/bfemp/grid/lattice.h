@@ -83,7 +83,11 @@ namespace bfemp
     {
       std::array<int, dim> cell;
       for (unsigned int d = 0; d < dim; ++d)
-        cell[d] = static_cast<int>(std::floor((x[d] - origin[d]) * inverse_dx));
+        {
+          const double xi        = (x[d] - origin[d]) * inverse_dx;
+          const int    truncated = static_cast<int>(xi);
+          cell[d]                = truncated - (xi < truncated);
+        }
       return cell;
     }
 

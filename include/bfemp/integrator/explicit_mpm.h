@@ -24,12 +24,12 @@ namespace bfemp
   class ExplicitMPM
   {
   public:
-    ExplicitMPM(const BackgroundGrid<dim>         &grid,
-                ParticleSystem<dim>               &particles,
-                const ParticleGridTransfer<dim>   &transfer,
-                const GridBoundaries<dim>         &boundaries,
-                const Tensor<1, dim>              &gravity,
-                const TimeParameters::Integrator   variant);
+    ExplicitMPM(const BackgroundGrid<dim>       &grid,
+                ParticleSystem<dim>             &particles,
+                const ParticleGridTransfer<dim> &transfer,
+                const GridBoundaries<dim>       &boundaries,
+                const Tensor<1, dim>            &gravity,
+                const TimeParameters::Integrator variant);
 
     /** Advances from @p time to time + dt. */
     void
@@ -57,13 +57,13 @@ namespace bfemp
     void
     for_each_node(const Function &f);
 
-    const BackgroundGrid<dim>         &grid;
-    ParticleSystem<dim>               &particles;
-    const ParticleGridTransfer<dim>   &transfer;
-    const GridBoundaries<dim>         &boundaries;
-    const Tensor<1, dim>               gravity;
-    const TimeParameters::Integrator   variant;
-    GridState<dim>                     state;
+    const BackgroundGrid<dim>       &grid;
+    ParticleSystem<dim>             &particles;
+    const ParticleGridTransfer<dim> &transfer;
+    const GridBoundaries<dim>       &boundaries;
+    const Tensor<1, dim>             gravity;
+    const TimeParameters::Integrator variant;
+    GridState<dim>                   state;
   };
 } // namespace bfemp
 

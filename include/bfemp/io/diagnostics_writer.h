@@ -21,11 +21,11 @@ namespace bfemp
     explicit DiagnosticsWriter(const std::string &path);
 
     void
-    write(const unsigned int           step,
-          const double                 time,
-          const double                 dt,
-          const StepDiagnostics<dim>  &diagnostics,
-          const double                 wall_time);
+    write(const unsigned int          step,
+          const double                time,
+          const double                dt,
+          const StepDiagnostics<dim> &diagnostics,
+          const double                wall_time);
 
   private:
     std::ofstream file;

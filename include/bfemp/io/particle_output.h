@@ -21,8 +21,9 @@ namespace bfemp
   class ParticleOutput
   {
   public:
-    ParticleOutput(const std::string                                  &folder,
-                   const std::vector<std::unique_ptr<Material<dim>>> &materials);
+    ParticleOutput(
+      const std::string                                 &folder,
+      const std::vector<std::unique_ptr<Material<dim>>> &materials);
 
     void
     write(const ParticleSystem<dim> &particles,
@@ -30,9 +31,9 @@ namespace bfemp
           const unsigned int         snapshot);
 
   private:
-    std::string                                         folder;
-    const std::vector<std::unique_ptr<Material<dim>>>  &materials;
-    PvdSeries                                           series;
+    std::string                                        folder;
+    const std::vector<std::unique_ptr<Material<dim>>> &materials;
+    PvdSeries                                          series;
   };
 } // namespace bfemp
 

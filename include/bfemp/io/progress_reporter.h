@@ -14,7 +14,9 @@ namespace bfemp
   class ProgressReporter
   {
   public:
-    ProgressReporter(std::ostream &out, const double end_time, const bool enabled);
+    ProgressReporter(std::ostream &out,
+                     const double  end_time,
+                     const bool    enabled);
 
     void
     report(const unsigned int step, const double time, const double dt);
@@ -24,10 +26,10 @@ namespace bfemp
     wall_time() const;
 
   private:
-    std::ostream                                      &out;
-    double                                             end_time;
-    bool                                               enabled;
-    std::chrono::steady_clock::time_point              start;
+    std::ostream                         &out;
+    double                                end_time;
+    bool                                  enabled;
+    std::chrono::steady_clock::time_point start;
   };
 } // namespace bfemp
 

@@ -39,10 +39,10 @@ namespace bfemp
 
     /** Measures the particle state. */
     static StepDiagnostics
-    measure(const ParticleSystem<dim>                          &particles,
+    measure(const ParticleSystem<dim>                         &particles,
             const std::vector<std::unique_ptr<Material<dim>>> &materials,
-            const ParticleGridTransfer<dim>                    &transfer,
-            const Tensor<1, dim>                               &gravity);
+            const ParticleGridTransfer<dim>                   &transfer,
+            const Tensor<1, dim>                              &gravity);
   };
 } // namespace bfemp
 

@@ -12,10 +12,10 @@ namespace bfemp
   /** prm subsection "material" of a body. */
   struct MaterialParameters
   {
-    std::string model           = "neo-Hookean";
-    double      youngs_modulus  = 1e6;
-    double      poisson_ratio   = 0.3;
-    double      density         = 1000.;
+    std::string model          = "neo-Hookean";
+    double      youngs_modulus = 1e6;
+    double      poisson_ratio  = 0.3;
+    double      density        = 1000.;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -87,10 +87,17 @@ namespace bfemp
     void
     rebuild_stripes();
 
-    const BackgroundGrid<dim>                                        &grid;
-    Particles::ParticleHandler<dim>                                   particle_handler;
-    types::particle_index                                             next_id = 0;
-    std::vector<std::vector<typename BackgroundGrid<dim>::cell_iterator>> stripes;
+    /** Re-inserts all particles so their data is in loop order in memory. */
+    void
+    store_in_loop_order();
+
+    const BackgroundGrid<dim>      &grid;
+    Particles::ParticleHandler<dim> particle_handler;
+    types::particle_index           next_id = 0;
+    /** Cell changes since the data was last put in loop order. */
+    std::size_t moved_since_ordering = 0;
+    std::vector<std::vector<typename BackgroundGrid<dim>::cell_iterator>>
+      stripes;
   };
 
 
@@ -144,8 +151,8 @@ namespace bfemp
   ParticleSystem<dim>::sum(const Function &f) const
   {
     std::vector<Result> partial(stripes.size(), Result());
-    auto &handler = const_cast<Particles::ParticleHandler<dim> &>(
-      particle_handler);
+    auto               &handler =
+      const_cast<Particles::ParticleHandler<dim> &>(particle_handler);
     parallel::apply_to_subranges(
       0u,
       static_cast<unsigned int>(stripes.size()),

@@ -62,7 +62,9 @@ namespace bfemp
    * that start with the file name. @p lenient skips undeclared entries.
    */
   void
-  parse_prm_file(ParameterHandler &prm, const std::string &file, const bool lenient);
+  parse_prm_file(ParameterHandler  &prm,
+                 const std::string &file,
+                 const bool         lenient);
 } // namespace bfemp
 
 #endif

@@ -40,6 +40,10 @@ namespace bfemp
     const ParticleSystem<dim> &
     particles() const;
 
+    /** Write access, e.g. to set a non-uniform initial state before run(). */
+    ParticleSystem<dim> &
+    particles();
+
     /** The diagnostics of the current state. */
     StepDiagnostics<dim>
     diagnostics() const;

@@ -24,8 +24,8 @@ namespace bfemp
   {
   public:
     ParticleGridTransfer(
-      const BackgroundGrid<dim>                          &grid,
-      const TransferParameters                           &parameters,
+      const BackgroundGrid<dim>                         &grid,
+      const TransferParameters                          &parameters,
       const std::vector<std::unique_ptr<Material<dim>>> &materials);
 
     /**
@@ -53,7 +53,7 @@ namespace bfemp
     void
     grid_to_particles(ParticleSystem<dim>  &particles,
                       const GridState<dim> &grid_state,
-                      const bool update_deformation_gradient) const;
+                      const bool            update_deformation_gradient) const;
 
     /** F_p <- (I + sum_i u_i grad w_ip^T) F_p (USF's early stress update). */
     void
@@ -83,8 +83,8 @@ namespace bfemp
            const GridState<dim> &grid_state,
            const bool            update_deformation_gradient) const;
 
-    const BackgroundGrid<dim>                          &grid;
-    const TransferParameters                            parameters;
+    const BackgroundGrid<dim>                         &grid;
+    const TransferParameters                           parameters;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
   };
 } // namespace bfemp
