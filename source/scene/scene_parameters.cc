@@ -101,10 +101,10 @@ namespace bfemp
                    const bool                      entries)
     {
       std::stringstream text;
-      prm.print_parameters(
-        text,
-        ParameterHandler::OutputStyle(ParameterHandler::ShortPRM |
-                                      ParameterHandler::KeepDeclarationOrder));
+      prm.print_parameters(text,
+                           ParameterHandler::OutputStyle(
+                             ParameterHandler::ShortPRM |
+                             ParameterHandler::KeepDeclarationOrder));
       std::vector<std::string> end_path;
       std::string              names;
       for (const PrmStatement &statement :
@@ -196,7 +196,8 @@ namespace bfemp
     catch (const std::exception &error)
       {
         throw InputError(
-          file + ": " + explain_parse_error(what_deal_ii_says(error), file, prm));
+          file + ": " +
+          explain_parse_error(what_deal_ii_says(error), file, prm));
       }
   }
 
