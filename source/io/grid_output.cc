@@ -4,6 +4,8 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <algorithm>
+
 namespace bfemp
 {
   template <int dim>
@@ -22,6 +24,14 @@ namespace bfemp
                          const double          time,
                          const unsigned int    snapshot)
   {
+    // Before the first step no node has mass: there is no active grid, and
+    // deal.II would write a VTU without a Points element, which VTK's
+    // readers reject. The series starts at the first step's snapshot.
+    if (std::none_of(state.mass.begin(), state.mass.end(), [](const double m) {
+          return m > 0.;
+        }))
+      return;
+
     Vector<double> mass(grid.node_dof_handler().n_dofs());
     Vector<double> velocity(grid.vector_dof_handler().n_dofs());
     for (std::size_t node = 0; node < state.mass.size(); ++node)

@@ -100,6 +100,39 @@ namespace bfemp
 
 
 
+  namespace
+  {
+    struct MaximumSpeed
+    {
+      double value = 0.;
+
+      MaximumSpeed &
+      operator+=(const MaximumSpeed &other)
+      {
+        value = std::max(value, other.value);
+        return *this;
+      }
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  double
+  StepDiagnostics<dim>::measure_max_speed(const ParticleSystem<dim> &particles)
+  {
+    using Layout = ParticleLayout<dim>;
+    return particles
+      .template sum<MaximumSpeed>([](const auto &particle) {
+        return MaximumSpeed{
+          Layout::get_vector(particle.get_properties(), Layout::velocity)
+            .norm()};
+      })
+      .value;
+  }
+
+
+
   template struct StepDiagnostics<2>;
   template struct StepDiagnostics<3>;
 } // namespace bfemp

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 namespace bfemp
@@ -234,15 +235,32 @@ namespace bfemp
 
   template <int dim>
   void
-  Simulation<dim>::run()
+  Simulation<dim>::prepare_output_folder()
   {
-    const RunParameters &run = parameters.run;
-    output_folder            = parameters.output.directory + "/" + run.name;
+    output_folder = parameters.output.directory + "/" + parameters.run.name;
     std::filesystem::create_directories(output_folder);
+    // Files of an earlier run in the same folder would sit next to this
+    // run's series and mislead; only bfemp's own file names are removed.
+    const std::regex ours(
+      "(particles|grid)(_[0-9]+\\.vtu|\\.pvd)(\\.part)?|diagnostics\\.csv");
+    for (const auto &entry : std::filesystem::directory_iterator(output_folder))
+      if (entry.is_regular_file() &&
+          std::regex_match(entry.path().filename().string(), ours))
+        std::filesystem::remove(entry.path());
     std::filesystem::copy_file(
       parameter_file,
       output_folder + "/input.prm",
       std::filesystem::copy_options::overwrite_existing);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::run()
+  {
+    const RunParameters &run = parameters.run;
+    prepare_output_folder();
     if (parameters.output.write_particles)
       particle_output =
         std::make_unique<ParticleOutput<dim>>(output_folder, materials);
@@ -291,6 +309,11 @@ namespace bfemp
                                      state,
                                      progress.wall_time());
           }
+        else
+          // The next step's CFL check needs the current speed, not the one
+          // of the last diagnosed step.
+          state.max_speed =
+            StepDiagnostics<dim>::measure_max_speed(particle_system);
         if (snapshot_due)
           {
             write_snapshot(time);

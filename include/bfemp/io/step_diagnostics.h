@@ -43,6 +43,10 @@ namespace bfemp
             const std::vector<std::unique_ptr<Material<dim>>> &materials,
             const ParticleGridTransfer<dim>                   &transfer,
             const Tensor<1, dim>                              &gravity);
+
+    /** max_p |v_p| alone, for the CFL check between diagnosed steps. */
+    static double
+    measure_max_speed(const ParticleSystem<dim> &particles);
   };
 } // namespace bfemp
 

@@ -65,6 +65,10 @@ namespace bfemp
     void
     check_state(const StepDiagnostics<dim> &d) const;
 
+    /** Creates <directory>/<run name>/, clears bfemp files of older runs. */
+    void
+    prepare_output_folder();
+
     void
     write_snapshot(const double time);
 
