@@ -37,8 +37,9 @@ namespace bfemp
     prm.declare_entry("wall layers",
                       "2",
                       Patterns::Integer(1),
-                      "[cells] Node layers at each wall that get the wall "
-                      "condition; particles must stay outside them.");
+                      "[cells] Thickness of each wall: the grid nodes within "
+                      "this many cells of the face (the face's own nodes "
+                      "included) get the wall condition.");
     prm.declare_entry("number of level sets",
                       "0",
                       Patterns::Integer(0),
@@ -140,15 +141,6 @@ namespace bfemp
                                             level_set.velocity());
           }
       }
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  GridBoundaries<dim>::wall_layers() const
-  {
-    return layers;
   }
 
 

@@ -41,9 +41,6 @@ namespace bfemp
           std::vector<Tensor<1, dim>> &velocity,
           const double                 time) const;
 
-    /** Number of node layers a wall occupies. */
-    unsigned int
-    wall_layers() const;
 
   private:
     /** wall_active[2 d] is the lower face of direction d, [2 d + 1] upper. */
