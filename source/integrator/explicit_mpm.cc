@@ -87,8 +87,7 @@ namespace bfemp
         transfer.particles_to_grid(particles, state, true);
         momentum_to_velocity();
         update_grid_velocity(dt, time);
-        set_displacement(state.new_velocity, dt);
-        transfer.grid_to_particles(particles, state, true);
+        transfer.grid_to_particles(particles, state, true, dt);
       }
     else
       {
@@ -99,8 +98,7 @@ namespace bfemp
         transfer.update_deformation_gradient(particles, state.displacement);
         transfer.stress_to_grid(particles, state);
         update_grid_velocity(dt, time);
-        set_displacement(state.new_velocity, dt);
-        transfer.grid_to_particles(particles, state, false);
+        transfer.grid_to_particles(particles, state, false, dt);
       }
     particles.update_cells();
   }

@@ -162,6 +162,9 @@ namespace bfemp
     using particle_iterator     = Particles::ParticleIterator<dim>;
     const Lattice<dim> &lattice = grid.lattice();
 
+    // Find, in parallel, the particles whose cell changed. Reference
+    // locations are not refreshed: bfemp evaluates kernels by lattice
+    // arithmetic and never reads them.
     std::vector<std::vector<particle_iterator>> movers(stripes.size());
     std::vector<std::string>                    escaped(stripes.size());
     parallel::apply_to_subranges(
@@ -171,25 +174,22 @@ namespace bfemp
         for (unsigned int s = begin; s < end; ++s)
           for (const auto &cell : stripes[s])
             {
-              const auto here  = grid.lattice_cell(cell);
-              auto       range = particle_handler.particles_in_cell(cell);
+              const std::size_t here =
+                lattice.cell_index(grid.lattice_cell(cell));
+              auto range = particle_handler.particles_in_cell(cell);
               for (auto it = range.begin(); it != range.end(); ++it)
                 {
-                  const Point<dim> x     = it->get_location();
-                  const auto       there = lattice.cell_of(x);
-                  if (!grid.stencil_inside(x) && escaped[s].empty())
+                  const Point<dim> x = it->get_location();
+                  if (!grid.stencil_inside(x))
                     {
-                      std::ostringstream message;
-                      message << "particle " << it->get_id() << " at ("
-                              << to_input_string(x)
-                              << ") left the usable grid (its kernel "
-                                 "stencil must stay inside the grid)";
-                      escaped[s] = message.str();
+                      if (escaped[s].empty())
+                        escaped[s] = "particle " +
+                                     std::to_string(it->get_id()) + " at (" +
+                                     to_input_string(x) +
+                                     ") left the usable grid (its kernel "
+                                     "stencil must stay inside the grid)";
                     }
-                  if (there == here)
-                    it->set_reference_location(
-                      reference_location<dim>(lattice, here, x));
-                  else
+                  else if (lattice.cell_index(lattice.cell_of(x)) != here)
                     movers[s].push_back(it);
                 }
             }
@@ -199,43 +199,51 @@ namespace bfemp
       if (!message.empty())
         throw SimulationError(message);
 
-    // Move the particles that changed cells: copy, remove, re-insert.
-    struct Moved
-    {
-      Point<dim>            location;
-      types::particle_index id;
-      std::vector<double>   properties;
-    };
-    std::vector<Moved>             moved;
-    std::vector<particle_iterator> removed;
+    // Move them: copy, remove, re-insert into the new cell.
+    const unsigned int                 n_properties = Layout::n_properties;
+    std::vector<particle_iterator>     removed;
+    std::vector<Point<dim>>            locations;
+    std::vector<types::particle_index> ids;
+    std::vector<double>                properties;
+    std::vector<typename BackgroundGrid<dim>::cell_iterator> sources;
     for (const auto &list : movers)
       for (const auto &it : list)
         {
-          const auto properties = it->get_properties();
-          moved.push_back(
-            {it->get_location(),
-             it->get_id(),
-             std::vector<double>(properties.begin(), properties.end())});
+          const auto p = it->get_properties();
+          properties.insert(properties.end(), p.begin(), p.end());
+          locations.push_back(it->get_location());
+          ids.push_back(it->get_id());
+          sources.push_back(it->get_surrounding_cell());
           removed.push_back(it);
         }
-    if (moved.empty())
+    if (removed.empty())
       return;
     particle_handler.remove_particles(removed);
-    for (const Moved &m : moved)
+
+    // The stripes list the cells that hold particles: rebuild them only if a
+    // cell was emptied or filled.
+    bool occupancy_changed = false;
+    for (const auto &cell : sources)
+      occupancy_changed =
+        occupancy_changed || particle_handler.n_particles_in_cell(cell) == 0;
+    for (std::size_t k = 0; k < ids.size(); ++k)
       {
-        const auto cell = lattice.cell_of(m.location);
-        particle_handler.insert_particle(m.location,
-                                         reference_location<dim>(lattice,
-                                                                 cell,
-                                                                 m.location),
-                                         m.id,
-                                         grid.cell(cell),
-                                         make_array_view(m.properties));
+        const auto  index = lattice.cell_of(locations[k]);
+        const auto &cell  = grid.cell(index);
+        occupancy_changed =
+          occupancy_changed || particle_handler.n_particles_in_cell(cell) == 0;
+        particle_handler.insert_particle(
+          locations[k],
+          reference_location<dim>(lattice, index, locations[k]),
+          ids[k],
+          cell,
+          ArrayView<const double>(properties.data() + k * n_properties,
+                                  n_properties));
       }
-    particle_handler.update_cached_numbers();
-    rebuild_stripes();
-    moved_since_ordering += moved.size();
-    if (moved_since_ordering > n_particles() / 4)
+    if (occupancy_changed)
+      rebuild_stripes();
+    moved_since_ordering += ids.size();
+    if (moved_since_ordering > n_particles() / 16)
       store_in_loop_order();
   }
 

@@ -97,12 +97,12 @@ namespace bfemp
 
 
   template <int dim>
-  template <int degree>
+  template <int degree, bool explicit_step>
   void
-  ParticleGridTransfer<dim>::gather(
-    ParticleSystem<dim>  &particles,
-    const GridState<dim> &grid_state,
-    const bool            update_deformation_gradient) const
+  ParticleGridTransfer<dim>::gather(ParticleSystem<dim>  &particles,
+                                    const GridState<dim> &grid_state,
+                                    const bool   update_deformation_gradient,
+                                    const double explicit_dt) const
   {
     using Layout                  = ParticleLayout<dim>;
     using Scheme                  = TransferParameters::Scheme;
@@ -113,6 +113,7 @@ namespace bfemp
     // D_p^-1 of Table 1 is a constant multiple of I for degree 2 and 3.
     const double inverse_inertia = degree == 2 ? 4. / (lattice.dx * lattice.dx)
                                                : 3. / (lattice.dx * lattice.dx);
+    const bool   affine_from_moments = scheme == Scheme::apic && degree > 1;
 
     particles.for_each([&](auto &particle) {
       const ArrayView<double>    p = particle.get_properties();
@@ -130,17 +131,21 @@ namespace bfemp
           const std::size_t     node  = stencil.node[k];
           const double          w     = stencil.weight[k];
           const Tensor<1, dim> &v_new = grid_state.new_velocity[node];
-          const Tensor<1, dim> &u     = grid_state.displacement[node];
           v_pic += w * v_new;
-          delta += w * u;
-          grad_u += outer_product(u, stencil.gradient[k]);
+          grad_v += outer_product(v_new, stencil.gradient[k]);
           if (scheme == Scheme::flip)
             v_old += w * grid_state.velocity[node];
-          else if (scheme == Scheme::apic)
+          if constexpr (explicit_step)
             {
-              if (degree == 1)
-                grad_v += outer_product(v_new, stencil.gradient[k]);
-              else
+              if (affine_from_moments)
+                B_first += outer_product(w * v_new, stencil.offset[k]);
+            }
+          else
+            {
+              const Tensor<1, dim> &u = grid_state.displacement[node];
+              delta += w * u;
+              grad_u += outer_product(u, stencil.gradient[k]);
+              if (affine_from_moments)
                 {
                   B_first +=
                     outer_product(w * v_new, 2. * stencil.offset[k] + u);
@@ -148,6 +153,20 @@ namespace bfemp
                 }
             }
         }
+
+      Tensor<2, dim> B;
+      if constexpr (explicit_step)
+        {
+          // u_i = dt v~_i: then delta = dt v_PIC, grad u = dt grad v, and
+          // Table 1's B_p reduces to sum_i w_ip v~_i (x_i - x_p)^T, because
+          // the dt-terms cancel once sum_i w_ip v~_i = v_PIC is used.
+          delta  = explicit_dt * v_pic;
+          grad_u = explicit_dt * grad_v;
+          B      = B_first;
+        }
+      else
+        B = 0.5 * (B_first - outer_product(v_pic, delta) - B_second +
+                   outer_product(delta, v_pic));
 
       Tensor<1, dim> v_new = v_pic;
       if (scheme == Scheme::flip)
@@ -157,17 +176,11 @@ namespace bfemp
           v_new = theta * v_pic + (1. - theta) * v_flip;
         }
       else if (scheme == Scheme::apic)
-        {
-          // Multilinear kernels: B D^-1 reduces to the velocity gradient
-          // (Jiang et al. 2015), which stays finite where D_p is singular.
-          const Tensor<2, dim> C =
-            degree == 1 ? grad_v
-                        : 0.5 *
-                            (B_first - outer_product(v_pic, delta) - B_second +
-                             outer_product(delta, v_pic)) *
-                            inverse_inertia;
-          Layout::set_tensor(p, Layout::affine_velocity, C);
-        }
+        // Multilinear kernels: B D^-1 reduces to the velocity gradient
+        // (Jiang et al. 2015), which stays finite where D_p is singular.
+        Layout::set_tensor(p,
+                           Layout::affine_velocity,
+                           degree == 1 ? grad_v : B * inverse_inertia);
       Layout::set_vector(p, Layout::velocity, v_new);
       if (update_deformation_gradient)
         Layout::set_tensor(p,
@@ -186,12 +199,21 @@ namespace bfemp
   ParticleGridTransfer<dim>::grid_to_particles(
     ParticleSystem<dim>  &particles,
     const GridState<dim> &grid_state,
-    const bool            update_deformation_gradient) const
+    const bool            update_deformation_gradient,
+    const double          explicit_dt) const
   {
     dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
-      gather<decltype(degree)::value>(particles,
-                                      grid_state,
-                                      update_deformation_gradient);
+      constexpr int d = decltype(degree)::value;
+      if (explicit_dt > 0.)
+        gather<d, true>(particles,
+                        grid_state,
+                        update_deformation_gradient,
+                        explicit_dt);
+      else
+        gather<d, false>(particles,
+                         grid_state,
+                         update_deformation_gradient,
+                         0.);
     });
   }
 

@@ -28,7 +28,7 @@ namespace bfemp
       dim == 2 ? n_nodes_1d * n_nodes_1d : n_nodes_1d * n_nodes_1d * n_nodes_1d;
 
     /** Evaluates weights, gradients, offsets and node indices at x. */
-    inline void
+    DEAL_II_ALWAYS_INLINE inline void
     reinit(const Lattice<dim> &lattice, const Point<dim> &x)
     {
       double w[dim][n_nodes_1d], dw[dim][n_nodes_1d], r[dim][n_nodes_1d];

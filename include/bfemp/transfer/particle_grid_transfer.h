@@ -48,12 +48,15 @@ namespace bfemp
      * Velocity (PIC, FLIP with PIC blend, or APIC), position x_p^{n+1} =
      * sum_i x~_i w_ip, affine velocity (APIC) and, if requested, F_p^{n+1} =
      * sum_i x~_i grad w_ip^T F_p^n, from the grid's new_velocity,
-     * displacement and (FLIP) velocity.
+     * displacement and (FLIP) velocity. With @p explicit_dt > 0 the
+     * displacement is u_i = explicit_dt v~_i, formed on the fly instead of
+     * read from the grid state (the explicit integrators' case).
      */
     void
     grid_to_particles(ParticleSystem<dim>  &particles,
                       const GridState<dim> &grid_state,
-                      const bool            update_deformation_gradient) const;
+                      const bool            update_deformation_gradient,
+                      const double          explicit_dt = 0.) const;
 
     /** F_p <- (I + sum_i u_i grad w_ip^T) F_p (USF's early stress update). */
     void
@@ -77,11 +80,12 @@ namespace bfemp
             const bool           with_momentum,
             const bool           with_stress) const;
 
-    template <int degree>
+    template <int degree, bool explicit_step>
     void
     gather(ParticleSystem<dim>  &particles,
            const GridState<dim> &grid_state,
-           const bool            update_deformation_gradient) const;
+           const bool            update_deformation_gradient,
+           const double          explicit_dt) const;
 
     const BackgroundGrid<dim>                         &grid;
     const TransferParameters                           parameters;
