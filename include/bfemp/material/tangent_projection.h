@@ -1,0 +1,63 @@
+#ifndef bfemp_material_tangent_projection_h
+#define bfemp_material_tangent_projection_h
+
+#include <deal.II/base/tensor.h>
+
+#include <array>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * Projection of a material tangent dP/dF onto the positive semi-definite
+   * cone, the building block of projected Newton (BFEMP Section 5): each
+   * quadrature point's tangent is projected before the chain rule, so every
+   * assembled Hessian is PSD by construction.
+   *
+   * dP/dF is read as the symmetric dim^2 x dim^2 matrix A_(ij),(kl) =
+   * d^2 psi / dF_ij dF_kl. Its eigen-decomposition A = sum_m lambda_m q_m
+   * q_m^T is computed by cyclic Jacobi rotations (allocation free, accurate
+   * for these 4 x 4 and 9 x 9 matrices), and the projection keeps
+   * sum_m max(lambda_m, 0) q_m q_m^T: the PSD matrix nearest to A in the
+   * Frobenius norm.
+   */
+  template <int dim>
+  class TangentProjection
+  {
+  public:
+    static constexpr unsigned int n = dim * dim;
+
+    /** Eigen-decomposes the symmetric part of @p tangent. */
+    explicit TangentProjection(const Tensor<4, dim> &tangent);
+
+    /** The projected tangent sum_m max(lambda_m, 0) q_m q_m^T. */
+    Tensor<4, dim>
+    projected() const;
+
+    /** Eigenvalues in ascending order. */
+    const std::array<double, n> &
+    eigenvalues() const;
+
+  private:
+    void
+    diagonalize();
+
+    void
+    sort_eigenpairs();
+
+    /** Working matrix, diagonal after diagonalize(). */
+    double a[n][n];
+    /** Columns are the eigenvectors. */
+    double q[n][n];
+
+    std::array<double, n> lambda;
+  };
+
+  /** Shorthand: the PSD projection of a tangent dP/dF. */
+  template <int dim>
+  Tensor<4, dim>
+  project_to_positive_semidefinite(const Tensor<4, dim> &tangent);
+} // namespace bfemp
+
+#endif
