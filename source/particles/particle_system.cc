@@ -56,6 +56,7 @@ namespace bfemp
   ParticleSystem<dim>::finish_insertion()
   {
     particle_handler.update_cached_numbers();
+    n_particles_total = particle_handler.n_locally_owned_particles();
     rebuild_stripes();
     store_in_loop_order();
   }
@@ -74,7 +75,9 @@ namespace bfemp
     std::vector<double>                buffer;
     std::vector<types::particle_index> ids;
     std::vector<Point<dim>>            locations;
-    buffer.reserve(particle_handler.n_locally_owned_particles() * n_properties);
+    buffer.reserve(n_particles_total * n_properties);
+    ids.reserve(n_particles_total);
+    locations.reserve(n_particles_total);
     for (const auto &stripe : stripes)
       for (const auto &cell : stripe)
         for (const auto &particle : particle_handler.particles_in_cell(cell))
@@ -97,7 +100,8 @@ namespace bfemp
           ArrayView<const double>(buffer.data() + k * n_properties,
                                   n_properties));
       }
-    particle_handler.update_cached_numbers();
+    // The number of particles is unchanged, so deal.II's cached counts (a
+    // full pass over the particles to refresh) are not needed here.
     moved_since_ordering = 0;
   }
 
@@ -107,7 +111,7 @@ namespace bfemp
   types::particle_index
   ParticleSystem<dim>::n_particles() const
   {
-    return particle_handler.n_locally_owned_particles();
+    return n_particles_total;
   }
 
 

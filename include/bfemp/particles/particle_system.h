@@ -96,6 +96,8 @@ namespace bfemp
     types::particle_index           next_id = 0;
     /** Cell changes since the data was last put in loop order. */
     std::size_t moved_since_ordering = 0;
+    /** Particles never appear or vanish after finish_insertion(). */
+    types::particle_index n_particles_total = 0;
     std::vector<std::vector<typename BackgroundGrid<dim>::cell_iterator>>
       stripes;
   };
