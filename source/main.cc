@@ -14,14 +14,21 @@ namespace
 {
   using namespace bfemp;
 
+  /** Reads and builds the scene; runs it unless @p only_validate. */
   template <int dim>
   void
-  run(const std::string &file)
+  run(const std::string &file, const bool only_validate)
   {
     SceneParameters<dim> parameters;
     parameters.read(file);
     Simulation<dim> simulation(parameters, file, std::cout);
-    simulation.run();
+    if (only_validate)
+      std::cout << "bfemp: " << file << " is valid: " << dim << "D, "
+                << parameters.bodies.size() << " bodies, "
+                << simulation.particles().n_particles() << " particles"
+                << std::endl;
+    else
+      simulation.run();
   }
 
 
@@ -52,6 +59,8 @@ namespace
   usage()
   {
     std::cerr << "usage: bfemp FILE.prm\n"
+                 "       bfemp --validate FILE.prm           (check, write "
+                 "nothing)\n"
                  "       bfemp --print-parameters [FOLDER]   (default: .)\n";
     return 2;
   }
@@ -73,12 +82,15 @@ main(int argc, char **argv)
           print_parameters(argc > 2 ? argv[2] : ".");
           return 0;
         }
-      if (argument.rfind("--", 0) == 0 || argc > 2)
+      const bool        validate = argument == "--validate";
+      const std::string file     = validate && argc == 3 ? argv[2] : argument;
+      if ((validate && argc != 3) || (!validate && argc > 2) ||
+          file.rfind("--", 0) == 0)
         return usage();
-      if (read_dimension(argument) == 2)
-        run<2>(argument);
+      if (read_dimension(file) == 2)
+        run<2>(file, validate);
       else
-        run<3>(argument);
+        run<3>(file, validate);
     }
   catch (const bfemp::InputError &error)
     {
