@@ -203,51 +203,48 @@ namespace bfemp
       if (!message.empty())
         throw SimulationError(message);
 
-    // Move them: copy, remove, re-insert into the new cell.
-    const unsigned int                 n_properties = Layout::n_properties;
-    std::vector<particle_iterator>     removed;
-    std::vector<Point<dim>>            locations;
-    std::vector<types::particle_index> ids;
-    std::vector<double>                properties;
-    std::vector<typename BackgroundGrid<dim>::cell_iterator> sources;
-    for (const auto &list : movers)
-      for (const auto &it : list)
+    // Move them one at a time: remove, then re-insert into the new cell.
+    // deal.II's PropertyPool hands the slot just freed to the next insert,
+    // so each particle keeps its memory slot and the data stays in (nearly)
+    // loop order. Removing a particle may shift later particles of the same
+    // cell, so each cell's movers go from the last to the first.
+    const unsigned int  n_properties = Layout::n_properties;
+    std::vector<double> properties(n_properties);
+    bool                occupancy_changed = false;
+    std::size_t         n_moved           = 0;
+    for (auto list = movers.rbegin(); list != movers.rend(); ++list)
+      for (auto it = list->rbegin(); it != list->rend(); ++it, ++n_moved)
         {
-          const auto p = it->get_properties();
-          properties.insert(properties.end(), p.begin(), p.end());
-          locations.push_back(it->get_location());
-          ids.push_back(it->get_id());
-          sources.push_back(it->get_surrounding_cell());
-          removed.push_back(it);
-        }
-    if (removed.empty())
-      return;
-    particle_handler.remove_particles(removed);
+          const auto      &particle = *it;
+          const auto       p        = particle->get_properties();
+          const Point<dim> x        = particle->get_location();
+          const auto       id       = particle->get_id();
+          const auto       source   = particle->get_surrounding_cell();
+          std::copy(p.begin(), p.end(), properties.begin());
+          particle_handler.remove_particle(particle);
 
-    // The stripes list the cells that hold particles: rebuild them only if a
-    // cell was emptied or filled.
-    bool occupancy_changed = false;
-    for (const auto &cell : sources)
-      occupancy_changed =
-        occupancy_changed || particle_handler.n_particles_in_cell(cell) == 0;
-    for (std::size_t k = 0; k < ids.size(); ++k)
-      {
-        const auto  index = lattice.cell_of(locations[k]);
-        const auto &cell  = grid.cell(index);
-        occupancy_changed =
-          occupancy_changed || particle_handler.n_particles_in_cell(cell) == 0;
-        particle_handler.insert_particle(
-          locations[k],
-          reference_location<dim>(lattice, index, locations[k]),
-          ids[k],
-          cell,
-          ArrayView<const double>(properties.data() + k * n_properties,
-                                  n_properties));
-      }
+          // The stripes list the cells that hold particles: they need a
+          // rebuild only if a cell was emptied or filled.
+          const auto  index = lattice.cell_of(x);
+          const auto &cell  = grid.cell(index);
+          occupancy_changed =
+            occupancy_changed ||
+            particle_handler.n_particles_in_cell(source) == 0 ||
+            particle_handler.n_particles_in_cell(cell) == 0;
+          particle_handler.insert_particle(x,
+                                           reference_location<dim>(lattice,
+                                                                   index,
+                                                                   x),
+                                           id,
+                                           cell,
+                                           make_array_view(properties));
+        }
+    if (n_moved == 0)
+      return;
     if (occupancy_changed)
       rebuild_stripes();
-    moved_since_ordering += ids.size();
-    if (moved_since_ordering > n_particles() / 16)
+    moved_since_ordering += n_moved;
+    if (moved_since_ordering > n_particles() / 4)
       store_in_loop_order();
   }
 
