@@ -6,7 +6,10 @@
 
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 
@@ -20,6 +23,33 @@ namespace bfemp_tests
     dealii::deallog.attach(logfile, false);
     dealii::deallog.depth_console(0);
     return logfile;
+  }
+
+  /** The rotation by @p angle in the plane (2D; the axis is ignored). */
+  inline dealii::Tensor<2, 2>
+  rotation(const double angle, const dealii::Tensor<1, 2> &)
+  {
+    dealii::Tensor<2, 2> Q;
+    Q[0][0] = std::cos(angle);
+    Q[0][1] = -std::sin(angle);
+    Q[1][0] = std::sin(angle);
+    Q[1][1] = std::cos(angle);
+    return Q;
+  }
+
+  /** The rotation by @p angle about the unit axis @p n (Rodrigues). */
+  inline dealii::Tensor<2, 3>
+  rotation(const double angle, const dealii::Tensor<1, 3> &n)
+  {
+    dealii::Tensor<2, 3> K;
+    K[0][1] = -n[2];
+    K[0][2] = n[1];
+    K[1][0] = n[2];
+    K[1][2] = -n[0];
+    K[2][0] = -n[1];
+    K[2][1] = n[0];
+    return dealii::unit_symmetric_tensor<3>() + std::sin(angle) * K +
+           (1. - std::cos(angle)) * K * K;
   }
 
   /** A check that the output records; a failure also makes the test exit

@@ -43,31 +43,7 @@ namespace
     return A;
   }
 
-  Tensor<2, 2>
-  rotation(const double angle, const Tensor<1, 2> &)
-  {
-    Tensor<2, 2> Q;
-    Q[0][0] = std::cos(angle);
-    Q[0][1] = -std::sin(angle);
-    Q[1][0] = std::sin(angle);
-    Q[1][1] = std::cos(angle);
-    return Q;
-  }
-
-  // Rodrigues' formula about the unit axis n.
-  Tensor<2, 3>
-  rotation(const double angle, const Tensor<1, 3> &n)
-  {
-    Tensor<2, 3> K;
-    K[0][1] = -n[2];
-    K[0][2] = n[1];
-    K[1][0] = n[2];
-    K[1][2] = -n[0];
-    K[2][0] = -n[1];
-    K[2][1] = n[0];
-    return unit_symmetric_tensor<3>() + std::sin(angle) * K +
-           (1. - std::cos(angle)) * K * K;
-  }
+  using bfemp_tests::rotation;
 
   template <int dim>
   Tensor<2, dim>
