@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnostics_csv.h"
 #include "tests.h"
 
 namespace bar_vibration
@@ -64,41 +65,7 @@ namespace bar_vibration
     return out.str();
   }
 
-  /** The columns @p names of diagnostics.csv. */
-  inline std::vector<std::vector<double>>
-  read_columns(const std::string &file, const std::vector<std::string> &names)
-  {
-    std::ifstream in(file);
-    std::string   line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    {
-      std::stringstream row(line);
-      for (std::string entry; std::getline(row, entry, ',');)
-        header.push_back(entry);
-    }
-    std::vector<unsigned int> index;
-    for (const std::string &name : names)
-      {
-        unsigned int i = 0;
-        while (i < header.size() && header[i] != name)
-          ++i;
-        if (i == header.size())
-          bfemp_tests::check(false, "diagnostics.csv has column " + name);
-        index.push_back(i);
-      }
-    std::vector<std::vector<double>> columns(names.size());
-    while (std::getline(in, line))
-      {
-        std::vector<double> values;
-        std::stringstream   row(line);
-        for (std::string entry; std::getline(row, entry, ',');)
-          values.push_back(std::stod(entry));
-        for (unsigned int c = 0; c < names.size(); ++c)
-          columns[c].push_back(values[index[c]]);
-      }
-    return columns;
-  }
+  using bfemp_tests::read_columns;
 
   /** Root of the cubic through (t[k], s[k]), k = i-1 .. i+2, bracketed by
    *  t[i], t[i+1] (Newton iterations from the linear estimate). */

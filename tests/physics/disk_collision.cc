@@ -21,48 +21,14 @@
 #include <string>
 #include <vector>
 
+#include "diagnostics_csv.h"
 #include "tests.h"
 
 using namespace dealii;
 
 namespace
 {
-  std::vector<std::vector<double>>
-  read_columns(const std::string &file, const std::vector<std::string> &names)
-  {
-    std::ifstream in(file);
-    std::string   line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    {
-      std::stringstream row(line);
-      for (std::string entry; std::getline(row, entry, ',');)
-        header.push_back(entry);
-    }
-    std::vector<unsigned int> index;
-    for (const std::string &name : names)
-      {
-        unsigned int i = 0;
-        while (i < header.size() && header[i] != name)
-          ++i;
-        if (i == header.size())
-          bfemp_tests::check(false, "diagnostics.csv has column " + name);
-        index.push_back(i);
-      }
-    std::vector<std::vector<double>> columns(names.size());
-    while (std::getline(in, line))
-      {
-        std::vector<double> values;
-        std::stringstream   row(line);
-        for (std::string entry; std::getline(row, entry, ',');)
-          values.push_back(std::stod(entry));
-        for (unsigned int c = 0; c < names.size(); ++c)
-          columns[c].push_back(values[index[c]]);
-      }
-    return columns;
-  }
-
-
+  using bfemp_tests::read_columns;
 
   /** Momentum of each body, summed from the particles. */
   std::vector<Tensor<1, 2>>

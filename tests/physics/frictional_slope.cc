@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "diagnostics_csv.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -29,32 +30,19 @@ namespace
   double
   acceleration(const std::string &csv)
   {
-    std::ifstream in(csv);
-    std::string   line;
-    std::getline(in, line); // header: step,time,dt,...,momentum_x,...,mass
-    std::vector<std::string> names;
-    for (std::stringstream header(line); std::getline(header, line, ',');)
-      names.push_back(line);
-    const auto column = [&](const std::string &name) {
-      return std::find(names.begin(), names.end(), name) - names.begin();
-    };
+    const auto columns =
+      bfemp_tests::read_columns(csv, {"time", "momentum_x", "mass"});
     double n = 0, st = 0, sv = 0, stt = 0, stv = 0;
-    while (std::getline(in, line))
-      {
-        std::vector<double> values;
-        for (std::stringstream row(line); std::getline(row, line, ',');)
-          values.push_back(std::stod(line));
-        const double t = values[column("time")];
-        const double v = values[column("momentum_x")] / values[column("mass")];
-        if (t > 0.1)
-          {
-            n += 1;
-            st += t;
-            sv += v;
-            stt += t * t;
-            stv += t * v;
-          }
-      }
+    for (unsigned int k = 0; k < columns[0].size(); ++k)
+      if (const double t = columns[0][k]; t > 0.1)
+        {
+          const double v = columns[1][k] / columns[2][k];
+          n += 1;
+          st += t;
+          sv += v;
+          stt += t * t;
+          stv += t * v;
+        }
     return (n * stv - st * sv) / (n * stt - st * st);
   }
 
