@@ -140,21 +140,36 @@ namespace bfemp
   {
     const Lattice<dim> &lattice = grid.lattice();
     stripes.assign((lattice.n_cells[0] + stripe_width - 1) / stripe_width, {});
-    // Cells in lattice order, so every loop visits particles in the same
-    // order whatever the history of insertions.
+    for (unsigned int s = 0; s < stripes.size(); ++s)
+      rebuild_stripe(s);
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::rebuild_stripe(const unsigned int s)
+  {
+    // Cells in lattice order (x fastest), so every loop visits particles in
+    // the same order whatever the history of insertions.
+    const Lattice<dim> &lattice = grid.lattice();
+    const int           first   = s * stripe_width;
+    const int last = std::min<int>(first + stripe_width, lattice.n_cells[0]);
+    const int n_z  = dim == 3 ? lattice.n_cells[dim - 1] : 1;
+    stripes[s].clear();
     std::array<int, dim> index{};
-    for (std::size_t c = 0; c < lattice.n_cells_total(); ++c)
-      {
-        std::size_t rest = c;
-        for (unsigned int d = 0; d < dim; ++d)
+    for (int z = 0; z < n_z; ++z)
+      for (int y = 0; y < static_cast<int>(lattice.n_cells[1]); ++y)
+        for (int x = first; x < last; ++x)
           {
-            index[d] = rest % lattice.n_cells[d];
-            rest /= lattice.n_cells[d];
+            index[0] = x;
+            index[1] = y;
+            if constexpr (dim == 3)
+              index[2] = z;
+            const auto &cell = grid.cell(index);
+            if (particle_handler.n_particles_in_cell(cell) > 0)
+              stripes[s].push_back(cell);
           }
-        const auto &cell = grid.cell(index);
-        if (particle_handler.n_particles_in_cell(cell) > 0)
-          stripes[index[0] / stripe_width].push_back(cell);
-      }
   }
 
 
@@ -210,8 +225,8 @@ namespace bfemp
     // cell, so each cell's movers go from the last to the first.
     const unsigned int  n_properties = Layout::n_properties;
     std::vector<double> properties(n_properties);
-    bool                occupancy_changed = false;
-    std::size_t         n_moved           = 0;
+    std::vector<bool>   occupancy_changed(stripes.size(), false);
+    std::size_t         n_moved = 0;
     for (auto list = movers.rbegin(); list != movers.rend(); ++list)
       for (auto it = list->rbegin(); it != list->rend(); ++it, ++n_moved)
         {
@@ -223,14 +238,15 @@ namespace bfemp
           std::copy(p.begin(), p.end(), properties.begin());
           particle_handler.remove_particle(particle);
 
-          // The stripes list the cells that hold particles: they need a
-          // rebuild only if a cell was emptied or filled.
+          // The stripes list the cells that hold particles: a stripe needs a
+          // rebuild only if one of its cells was emptied or filled.
           const auto  index = lattice.cell_of(x);
           const auto &cell  = grid.cell(index);
-          occupancy_changed =
-            occupancy_changed ||
-            particle_handler.n_particles_in_cell(source) == 0 ||
-            particle_handler.n_particles_in_cell(cell) == 0;
+          if (particle_handler.n_particles_in_cell(source) == 0)
+            occupancy_changed[grid.lattice_cell(source)[0] / stripe_width] =
+              true;
+          if (particle_handler.n_particles_in_cell(cell) == 0)
+            occupancy_changed[index[0] / stripe_width] = true;
           particle_handler.insert_particle(x,
                                            reference_location<dim>(lattice,
                                                                    index,
@@ -241,8 +257,9 @@ namespace bfemp
         }
     if (n_moved == 0)
       return;
-    if (occupancy_changed)
-      rebuild_stripes();
+    for (unsigned int stripe = 0; stripe < stripes.size(); ++stripe)
+      if (occupancy_changed[stripe])
+        rebuild_stripe(stripe);
     moved_since_ordering += n_moved;
     if (moved_since_ordering > n_particles() / 4)
       store_in_loop_order();

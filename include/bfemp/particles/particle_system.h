@@ -87,6 +87,10 @@ namespace bfemp
     void
     rebuild_stripes();
 
+    /** Lists the non-empty cells of stripe @p s again. */
+    void
+    rebuild_stripe(const unsigned int s);
+
     /** Re-inserts all particles so their data is in loop order in memory. */
     void
     store_in_loop_order();
