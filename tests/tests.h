@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <random>
 
 namespace bfemp_tests
 {
@@ -24,6 +25,51 @@ namespace bfemp_tests
     dealii::deallog.depth_console(0);
     return logfile;
   }
+
+  /**
+   * Uniform random numbers from a seeded std::mt19937. The standard fixes
+   * the engine's output sequence (unlike the distributions'), so a test
+   * draws the same values with every compiler.
+   */
+  class RandomNumbers
+  {
+  public:
+    explicit RandomNumbers(const unsigned int seed)
+      : engine(seed)
+    {}
+
+    double
+    uniform(const double low, const double high)
+    {
+      return low + (high - low) * (engine() / 4294967295.);
+    }
+
+    /** Components uniform in [-amplitude, amplitude]. */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    vector(const double amplitude)
+    {
+      dealii::Tensor<1, dim> v;
+      for (unsigned int d = 0; d < dim; ++d)
+        v[d] = uniform(-amplitude, amplitude);
+      return v;
+    }
+
+    /** Entries uniform in [-amplitude, amplitude], row by row. */
+    template <int dim>
+    dealii::Tensor<2, dim>
+    tensor(const double amplitude)
+    {
+      dealii::Tensor<2, dim> A;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          A[i][j] = uniform(-amplitude, amplitude);
+      return A;
+    }
+
+  private:
+    std::mt19937 engine;
+  };
 
   /** The rotation by @p angle in the plane (2D; the axis is ignored). */
   inline dealii::Tensor<2, 2>

@@ -29,28 +29,10 @@ using namespace dealii;
 
 namespace
 {
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the elements are the same with every compiler.
-  std::mt19937 rng(20240612);
-
-  double
-  uniform(const double low, const double high)
-  {
-    return low + (high - low) * (rng() / 4294967295.);
-  }
+  bfemp_tests::RandomNumbers random_numbers(20240612);
 
   template <int dim>
   using Nodes = typename bfemp::SimplexElement<dim>::NodePositions;
-
-  template <int dim>
-  Tensor<1, dim>
-  random_vector(const double amplitude)
-  {
-    Tensor<1, dim> v;
-    for (unsigned int d = 0; d < dim; ++d)
-      v[d] = uniform(-amplitude, amplitude);
-    return v;
-  }
 
   using bfemp_tests::rotation;
 
@@ -58,8 +40,8 @@ namespace
   Tensor<2, dim>
   random_rotation()
   {
-    const Tensor<1, dim> n = random_vector<dim>(1.);
-    return rotation(uniform(0., 2. * M_PI), n / n.norm());
+    const Tensor<1, dim> n = random_numbers.vector<dim>(1.);
+    return rotation(random_numbers.uniform(0., 2. * M_PI), n / n.norm());
   }
 
   template <int dim>
@@ -81,12 +63,12 @@ namespace
   {
     while (true)
       {
-        const Tensor<2, dim> Q      = random_rotation<dim>();
-        const Point<dim>     origin = Point<dim>(random_vector<dim>(2.));
-        Nodes<dim>           X;
+        const Tensor<2, dim> Q  = random_rotation<dim>();
+        const Point<dim> origin = Point<dim>(random_numbers.vector<dim>(2.));
+        Nodes<dim>       X;
         for (unsigned int a = 0; a < dim + 1; ++a)
           {
-            Tensor<1, dim> corner = random_vector<dim>(0.2 * size);
+            Tensor<1, dim> corner = random_numbers.vector<dim>(0.2 * size);
             if (a > 0)
               corner[a - 1] += size;
             X[a] = origin + Q * corner;
@@ -108,12 +90,12 @@ namespace
       {
         Tensor<2, dim> A = unit_symmetric_tensor<dim>();
         for (unsigned int i = 0; i < dim; ++i)
-          A[i] += random_vector<dim>(amplitude);
-        const Tensor<1, dim> t = random_vector<dim>(1.);
+          A[i] += random_numbers.vector<dim>(amplitude);
+        const Tensor<1, dim> t = random_numbers.vector<dim>(1.);
         Nodes<dim>           x;
         for (unsigned int a = 0; a < dim + 1; ++a)
           x[a] = Point<dim>(A * X[a] + t +
-                            random_vector<dim>(0.5 * amplitude * size));
+                            random_numbers.vector<dim>(0.5 * amplitude * size));
         if (determinant(element.deformation_gradient(x)) > 0.2)
           return x;
       }
@@ -183,7 +165,7 @@ namespace
                         const bfemp::Material<dim>       &material)
   {
     const Tensor<2, dim> Q = random_rotation<dim>();
-    const Tensor<1, dim> t = random_vector<dim>(3.);
+    const Tensor<1, dim> t = random_numbers.vector<dim>(3.);
     Nodes<dim>           x;
     for (unsigned int a = 0; a < dim + 1; ++a)
       x[a] = Point<dim>(Q * X[a] + t);
@@ -208,8 +190,8 @@ namespace
     double max_rigid_energy = 0., max_rigid_gradient = 0.;
     for (unsigned int sample = 0; sample < 10; ++sample)
       {
-        const double                     size = std::pow(10., uniform(-2., 1.));
-        const Nodes<dim>                 X    = random_rest_element<dim>(size);
+        const double     size = std::pow(10., random_numbers.uniform(-2., 1.));
+        const Nodes<dim> X    = random_rest_element<dim>(size);
         const bfemp::SimplexElement<dim> element(X);
 
         max_identity_error =

@@ -21,15 +21,7 @@ using namespace bfemp;
 
 namespace
 {
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the points are the same with every compiler.
-  std::mt19937 rng(4321);
-
-  double
-  uniform(const double low, const double high)
-  {
-    return low + (high - low) * (rng() / 4294967295.);
-  }
+  bfemp_tests::RandomNumbers random_numbers(4321);
 
   /** N_j(xi) (derivative = 0) or N_j'(xi) (derivative = 1) from evaluate(). */
   template <int degree>
@@ -54,7 +46,7 @@ namespace
     double max_value = 0., max_outside = 0., max_derivative = 0.;
     for (unsigned int q = 0; q < 1000; ++q)
       {
-        const double xi = uniform(0., 10.);
+        const double xi = random_numbers.uniform(0., 10.);
         double       w[degree + 1], dw[degree + 1];
         const int    base = Kernel::evaluate(xi, w, dw);
         for (int a = 0; a <= degree; ++a)

@@ -22,15 +22,7 @@ using namespace bfemp;
 
 namespace
 {
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the points are the same with every compiler.
-  std::mt19937 rng(1234);
-
-  double
-  uniform(const double low, const double high)
-  {
-    return low + (high - low) * (rng() / 4294967295.);
-  }
+  bfemp_tests::RandomNumbers random_numbers(1234);
 
   template <int dim, int degree>
   void
@@ -55,7 +47,7 @@ namespace
         Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const double xi = uniform(3., 7.);
+            const double xi = random_numbers.uniform(3., 7.);
             x[d]            = origin[d] + dx * (q % 10 == 0 ? std::round(xi)
                                                 : q % 10 == 1 ? std::round(xi) + 0.5
                                                               : xi);

@@ -22,26 +22,7 @@ using namespace dealii;
 
 namespace
 {
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the deformations are the same with every compiler.
-  std::mt19937 rng(20240611);
-
-  double
-  uniform(const double low, const double high)
-  {
-    return low + (high - low) * (rng() / 4294967295.);
-  }
-
-  template <int dim>
-  Tensor<2, dim>
-  random_tensor(const double amplitude)
-  {
-    Tensor<2, dim> A;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        A[i][j] = uniform(-amplitude, amplitude);
-    return A;
-  }
+  bfemp_tests::RandomNumbers random_numbers(20240611);
 
   using bfemp_tests::rotation;
 
@@ -51,7 +32,7 @@ namespace
   {
     Tensor<1, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
-      n[d] = uniform(-1., 1.);
+      n[d] = random_numbers.uniform(-1., 1.);
     return rotation(angle, n / n.norm());
   }
 
@@ -62,7 +43,7 @@ namespace
     while (true)
       {
         const Tensor<2, dim> F = Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-                                 random_tensor<dim>(amplitude);
+                                 random_numbers.tensor<dim>(amplitude);
         if (determinant(F) > 0.2)
           return F;
       }
@@ -81,9 +62,10 @@ namespace
     const double   stretches[3] = {2.5, 0.4, 1.3};
     for (unsigned int d = 0; d < dim; ++d)
       stretch[d][d] = stretches[d];
-    Fs.emplace_back("large stretch",
-                    random_rotation<dim>(uniform(0., 3.)) * stretch *
-                      transpose(random_rotation<dim>(uniform(0., 3.))));
+    Fs.emplace_back(
+      "large stretch",
+      random_rotation<dim>(random_numbers.uniform(0., 3.)) * stretch *
+        transpose(random_rotation<dim>(random_numbers.uniform(0., 3.))));
 
     Fs.emplace_back("large rotation",
                     random_rotation<dim>(M_PI - 1e-3) *

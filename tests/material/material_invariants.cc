@@ -18,15 +18,7 @@ using namespace dealii;
 
 namespace
 {
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the tensors are the same with every compiler.
-  std::mt19937 rng(7);
-
-  double
-  uniform(const double low, const double high)
-  {
-    return low + (high - low) * (rng() / 4294967295.);
-  }
+  bfemp_tests::RandomNumbers random_numbers(7);
 
   template <int dim>
   Tensor<2, dim>
@@ -37,7 +29,7 @@ namespace
         Tensor<2, dim> F = unit_symmetric_tensor<dim>();
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            F[i][j] += uniform(-amplitude, amplitude);
+            F[i][j] += random_numbers.uniform(-amplitude, amplitude);
         if (determinant(F) > 0.2)
           return F;
       }
@@ -51,7 +43,7 @@ namespace
   {
     Tensor<1, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
-      n[d] = uniform(-1., 1.);
+      n[d] = random_numbers.uniform(-1., 1.);
     return rotation(angle, n / n.norm());
   }
 

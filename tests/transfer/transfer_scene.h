@@ -22,40 +22,33 @@
 #include <utility>
 #include <vector>
 
+#include "tests.h"
+
 namespace bfemp_tests
 {
   using namespace dealii;
   using namespace bfemp;
 
-  // mt19937's output sequence is fixed by the standard (unlike the
-  // distributions), so the particles are the same with every compiler.
-  inline std::mt19937 rng(20240917);
+  inline RandomNumbers random_numbers(20240917);
 
   inline double
   uniform(const double low, const double high)
   {
-    return low + (high - low) * (rng() / 4294967295.);
+    return random_numbers.uniform(low, high);
   }
 
   template <int dim>
   Tensor<1, dim>
   random_vector(const double amplitude)
   {
-    Tensor<1, dim> v;
-    for (unsigned int d = 0; d < dim; ++d)
-      v[d] = uniform(-amplitude, amplitude);
-    return v;
+    return random_numbers.vector<dim>(amplitude);
   }
 
   template <int dim>
   Tensor<2, dim>
   random_tensor(const double amplitude)
   {
-    Tensor<2, dim> A;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        A[i][j] = uniform(-amplitude, amplitude);
-    return A;
+    return random_numbers.tensor<dim>(amplitude);
   }
 
   /** x with two decimals, for output that must not depend on round-off. */
