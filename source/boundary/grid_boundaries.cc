@@ -2,7 +2,10 @@
 #include <bfemp/base/parameter_tools.h>
 #include <bfemp/boundary/grid_boundaries.h>
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
+
+#include <algorithm>
 
 namespace bfemp
 {
@@ -108,39 +111,103 @@ namespace bfemp
 
 
   template <int dim>
+  template <typename Function>
+  void
+  GridBoundaries<dim>::for_each_condition(const Lattice<dim> &lattice,
+                                          const std::size_t   node,
+                                          const double        time,
+                                          const Function     &f) const
+  {
+    const Tensor<1, dim> at_rest;
+    const auto           index = lattice.node_multi_index(node);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Tensor<1, dim> inward;
+        if (wall_active[2 * d] && index[d] <= static_cast<int>(layers))
+          inward[d] = 1.;
+        else if (wall_active[2 * d + 1] &&
+                 index[d] >= static_cast<int>(lattice.n_cells[d] - layers))
+          inward[d] = -1.;
+        if (inward.norm_square() > 0.)
+          f(wall_condition, inward, at_rest);
+      }
+    if (!level_sets.empty())
+      {
+        const Point<dim> x = lattice.node_position(node);
+        for (const LevelSet<dim> &level_set : level_sets)
+          if (level_set.value(x, time) <= 0.)
+            f(level_set.condition(),
+              level_set.normal(x, time),
+              level_set.velocity());
+      }
+  }
+
+
+
+  template <int dim>
   void
   GridBoundaries<dim>::apply(const Lattice<dim>          &lattice,
                              const std::vector<double>   &mass,
                              std::vector<Tensor<1, dim>> &velocity,
                              const double                 time) const
   {
-    const Tensor<1, dim> at_rest;
     for (std::size_t node = 0; node < mass.size(); ++node)
-      {
-        if (mass[node] <= 0.)
-          continue;
-        const auto index = lattice.node_multi_index(node);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            Tensor<1, dim> inward;
-            if (wall_active[2 * d] && index[d] <= static_cast<int>(layers))
-              inward[d] = 1.;
-            else if (wall_active[2 * d + 1] &&
-                     index[d] >= static_cast<int>(lattice.n_cells[d] - layers))
-              inward[d] = -1.;
-            if (inward.norm_square() > 0.)
-              wall_condition.apply(velocity[node], inward, at_rest);
-          }
-        if (!level_sets.empty())
-          {
-            const Point<dim> x = lattice.node_position(node);
-            for (const LevelSet<dim> &level_set : level_sets)
-              if (level_set.value(x, time) <= 0.)
-                level_set.condition().apply(velocity[node],
-                                            level_set.normal(x, time),
-                                            level_set.velocity());
-          }
-      }
+      if (mass[node] > 0.)
+        for_each_condition(lattice,
+                           node,
+                           time,
+                           [&](const BoundaryCondition &condition,
+                               const Tensor<1, dim>    &normal,
+                               const Tensor<1, dim>    &obstacle_velocity) {
+                             condition.apply(velocity[node],
+                                             normal,
+                                             obstacle_velocity);
+                           });
+  }
+
+
+
+  template <int dim>
+  std::vector<typename GridBoundaries<dim>::NodeConstraint>
+  GridBoundaries<dim>::implicit_constraints(
+    const Lattice<dim>                &lattice,
+    const std::vector<double>         &mass,
+    const std::vector<Tensor<1, dim>> &velocity,
+    const double                       time) const
+  {
+    std::vector<NodeConstraint> constraints;
+    for (std::size_t node = 0; node < mass.size(); ++node)
+      if (mass[node] > 0.)
+        for_each_condition(
+          lattice,
+          node,
+          time,
+          [&](const BoundaryCondition &condition,
+              const Tensor<1, dim>    &normal,
+              const Tensor<1, dim>    &obstacle_velocity) {
+            using Type = BoundaryCondition::Type;
+            if (condition.type == Type::separable_slip &&
+                (velocity[node] - obstacle_velocity) * normal >= 0.)
+              return;
+            const Tensor<2, dim> free_projector =
+              condition.type == Type::sticky
+                ? Tensor<2, dim>()
+                : Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+                    outer_product(normal, normal);
+            constraints.push_back({node, free_projector, obstacle_velocity});
+          });
+    return constraints;
+  }
+
+
+
+  template <int dim>
+  bool
+  GridBoundaries<dim>::any() const
+  {
+    return !level_sets.empty() ||
+           std::find(wall_active.begin(), wall_active.end(), true) !=
+             wall_active.end();
   }
 
 

@@ -9,9 +9,14 @@ namespace bfemp
     prm.enter_subsection("time");
     prm.declare_entry("integrator",
                       "explicit USL",
-                      Patterns::Selection("explicit USL|explicit USF"),
+                      Patterns::Selection("explicit USL|explicit USF|"
+                                          "implicit backward Euler|"
+                                          "implicit Newmark"),
                       "[-] Time integrator: explicit MPM with update stress "
-                      "last or first.");
+                      "last or first (MPM bodies only), or the implicit "
+                      "incremental potential of BFEMP eqs. 21-22 with "
+                      "backward Euler or midpoint Newmark (MPM and FEM "
+                      "bodies; see subsection 'solver').");
     prm.declare_entry("time step mode",
                       "CFL",
                       Patterns::Selection("fixed|CFL"),
@@ -36,7 +41,10 @@ namespace bfemp
                       Patterns::Double(),
                       "[-] A step whose CFL number dt (c_p + max |v_p|) / dx "
                       "exceeds this stops the run: explicit MPM is unstable "
-                      "there.");
+                      "there. Implicit integrators have no such limit: their "
+                      "CFL number uses only the particle speed, dt max "
+                      "|v_p| / dx, which keeps particles from crossing more "
+                      "than a cell per step.");
     prm.leave_subsection();
   }
 
@@ -46,14 +54,17 @@ namespace bfemp
   TimeParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("time");
-    integrator         = prm.get("integrator") == "explicit USL"
-                           ? Integrator::explicit_usl
-                           : Integrator::explicit_usf;
-    adaptive           = prm.get("time step mode") == "CFL";
-    time_step          = prm.get_double("time step");
-    cfl_number         = prm.get_double("CFL number");
-    maximum_time_step  = prm.get_double("maximum time step");
-    maximum_cfl_number = prm.get_double("maximum CFL number");
+    const std::string name = prm.get("integrator");
+    integrator             = name == "explicit USL"   ? Integrator::explicit_usl
+                             : name == "explicit USF" ? Integrator::explicit_usf
+                             : name == "implicit backward Euler"
+                               ? Integrator::implicit_backward_euler
+                               : Integrator::implicit_newmark;
+    adaptive               = prm.get("time step mode") == "CFL";
+    time_step              = prm.get_double("time step");
+    cfl_number             = prm.get_double("CFL number");
+    maximum_time_step      = prm.get_double("maximum time step");
+    maximum_cfl_number     = prm.get_double("maximum CFL number");
     prm.leave_subsection();
 
     require_input(time_step > 0.,
@@ -77,5 +88,15 @@ namespace bfemp
                   to_input_string(cfl_number),
                   "must satisfy 0 < CFL number <= maximum CFL number (" +
                     to_input_string(maximum_cfl_number) + ")");
+  }
+
+
+
+  TimeParameters::ImplicitScheme
+  TimeParameters::implicit_scheme() const
+  {
+    if (integrator == Integrator::implicit_newmark)
+      return {0.5, 0.25, 0.5};
+    return {1., 0.5, 1.};
   }
 } // namespace bfemp

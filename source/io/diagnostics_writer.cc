@@ -7,8 +7,10 @@
 namespace bfemp
 {
   template <int dim>
-  DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path)
+  DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
+                                            const bool         implicit)
     : file(path)
+    , implicit(implicit)
   {
     if (!file)
       throw SimulationError("cannot open '" + path + "' for writing");
@@ -21,7 +23,12 @@ namespace bfemp
       file << ",angular_momentum";
     else
       file << ",angular_momentum_x,angular_momentum_y,angular_momentum_z";
-    file << ",mass,min_J,max_speed,wall_time" << std::endl;
+    file << ",mass,min_J,max_speed,wall_time";
+    if (implicit)
+      file << ",newton_iterations,line_search_backtracks,step_bound_hits,"
+              "residual,dofs,assembly_time,factorization_time,solve_time,"
+              "line_search_time";
+    file << std::endl;
   }
 
 
@@ -32,7 +39,9 @@ namespace bfemp
                                 const double                time,
                                 const double                dt,
                                 const StepDiagnostics<dim> &d,
-                                const double                wall_time)
+                                const double                wall_time,
+                                const NewtonStatistics     &newton,
+                                const unsigned int          n_dofs)
   {
     std::ostringstream row;
     row << std::setprecision(12) << step << ',' << time << ',' << dt << ','
@@ -43,7 +52,13 @@ namespace bfemp
     for (unsigned int c = (dim == 2 ? 2 : 0); c < 3; ++c)
       row << ',' << d.angular_momentum[c];
     row << ',' << d.mass << ',' << d.min_J << ',' << d.max_speed << ','
-        << std::setprecision(6) << wall_time << '\n';
+        << std::setprecision(6) << wall_time;
+    if (implicit)
+      row << ',' << newton.iterations << ',' << newton.backtracks << ','
+          << newton.bound_hits << ',' << newton.residual << ',' << n_dofs << ','
+          << newton.assembly_time << ',' << newton.factorization_time << ','
+          << newton.solve_time << ',' << newton.line_search_time;
+    row << '\n';
     file << row.str() << std::flush;
   }
 

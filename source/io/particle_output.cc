@@ -17,22 +17,6 @@ namespace bfemp
 
 
 
-  namespace
-  {
-    template <int dim>
-    double
-    von_mises(const Tensor<2, dim> &sigma)
-    {
-      // In 2D the out-of-plane stress is not tracked; the in-plane deviator
-      // is used, which is what ParaView users compare across runs.
-      const Tensor<2, dim> deviator =
-        sigma - trace(sigma) / dim * unit_symmetric_tensor<dim>();
-      return std::sqrt(1.5 * scalar_product(deviator, deviator));
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   ParticleOutput<dim>::write(const ParticleSystem<dim> &particles,
@@ -96,7 +80,7 @@ namespace bfemp
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             patch.data(field++, 0) = sigma[i][j];
-        patch.data(field++, 0) = von_mises(sigma);
+        patch.data(field++, 0) = von_mises_stress(sigma);
         patch.data(field++, 0) = determinant(F);
         patch.data(field++, 0) = p[Layout::mass];
         patch.data(field++, 0) = p[Layout::material_id];

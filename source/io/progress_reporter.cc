@@ -28,6 +28,28 @@ namespace bfemp
   void
   ProgressReporter::report(const unsigned int step,
                            const double       time,
+                           const double       dt,
+                           const unsigned int newton_iterations,
+                           const unsigned int n_dofs)
+  {
+    if (!enabled)
+      return;
+    const double elapsed = wall_time();
+    const double remaining =
+      time > 0. ? elapsed * (end_time - time) / time : 0.;
+    out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
+        << std::scientific << std::setprecision(4) << time << "  dt = " << dt
+        << std::defaultfloat << "  Newton " << std::setw(3) << newton_iterations
+        << "  dofs " << n_dofs << std::fixed << std::setprecision(1)
+        << "  wall " << elapsed << " s  left ~" << remaining << " s"
+        << std::defaultfloat << std::endl;
+  }
+
+
+
+  void
+  ProgressReporter::report(const unsigned int step,
+                           const double       time,
                            const double       dt)
   {
     if (!enabled)

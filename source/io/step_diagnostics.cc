@@ -2,6 +2,8 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <cmath>
+
 namespace bfemp
 {
   template <int dim>
@@ -129,6 +131,47 @@ namespace bfemp
             .norm()};
       })
       .value;
+  }
+
+
+
+  template <int dim>
+  StepDiagnostics<dim>
+  StepDiagnostics<dim>::measure(
+    const std::vector<std::unique_ptr<FemBody<dim>>> &bodies,
+    const Tensor<1, dim>                             &gravity)
+  {
+    StepDiagnostics d;
+    for (const auto &body : bodies)
+      {
+        for (unsigned int a = 0; a < body->n_nodes(); ++a)
+          {
+            const double          m = body->masses()[a];
+            const Point<dim>     &x = body->positions()[a];
+            const Tensor<1, dim> &v = body->velocities()[a];
+            d.mass += m;
+            d.kinetic_energy += 0.5 * m * v.norm_square();
+            d.gravitational_energy -= m * (gravity * x);
+            d.linear_momentum += m * v;
+            d.angular_momentum +=
+              particle_angular_momentum<dim>(m, x, v, Tensor<2, dim>());
+            d.max_speed = std::max(d.max_speed, v.norm());
+            d.finite    = d.finite && std::isfinite(x.norm_square()) &&
+                       std::isfinite(v.norm_square());
+          }
+        for (unsigned int e = 0; e < body->elements().size(); ++e)
+          {
+            typename SimplexElement<dim>::NodePositions x;
+            for (unsigned int a = 0; a <= dim; ++a)
+              x[a] = body->positions()[body->element_nodes()[e][a]];
+            const auto  &element = body->elements()[e];
+            const double J       = determinant(element.deformation_gradient(x));
+            d.min_J              = std::min(d.min_J, J);
+            if (J > 0.)
+              d.elastic_energy += element.energy(x, body->material());
+          }
+      }
+    return d;
   }
 
 

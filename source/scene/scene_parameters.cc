@@ -219,14 +219,21 @@ namespace bfemp
   SceneParameters<dim>::declare_parameters(
     ParameterHandler                &prm,
     const std::vector<unsigned int> &primitives_per_body,
-    const unsigned int               n_level_sets)
+    const unsigned int               n_level_sets,
+    const unsigned int               n_fem_bodies)
   {
     declare_dimension(prm);
     prm.declare_entry("number of bodies",
                       "1",
-                      Patterns::Integer(1),
+                      Patterns::Integer(0),
                       "[-] Number of MPM bodies, subsections 'body 0', 'body "
                       "1', ...");
+    prm.declare_entry("number of FEM bodies",
+                      "0",
+                      Patterns::Integer(0),
+                      "[-] Number of linear-simplex FEM bodies, subsections "
+                      "'fem body 0', 'fem body 1', ...; they need an "
+                      "implicit 'time/integrator'.");
     RunParameters::declare_parameters(prm);
     GridParameters<dim>::declare_parameters(prm);
     TimeParameters::declare_parameters(prm);
@@ -241,6 +248,13 @@ namespace bfemp
     prm.leave_subsection();
     GridBoundaries<dim>::declare_parameters(prm, n_level_sets);
     OutputParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    for (unsigned int b = 0; b < n_fem_bodies; ++b)
+      {
+        prm.enter_subsection(parameter_tools::numbered("fem body", b));
+        FemBodyParameters<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
     for (unsigned int b = 0; b < primitives_per_body.size(); ++b)
       {
         prm.enter_subsection(parameter_tools::numbered("body", b));
@@ -272,6 +286,27 @@ namespace bfemp
         bodies[b].parse_parameters(prm, name);
         prm.leave_subsection();
       }
+    solver.parse_parameters(prm);
+    fem_bodies.resize(prm.get_integer("number of FEM bodies"));
+    for (unsigned int b = 0; b < fem_bodies.size(); ++b)
+      {
+        const std::string name = parameter_tools::numbered("fem body", b);
+        prm.enter_subsection(name);
+        fem_bodies[b].parse_parameters(prm, name, directory);
+        prm.leave_subsection();
+      }
+    require_input(!bodies.empty() || !fem_bodies.empty(),
+                  "top level",
+                  "number of bodies",
+                  "0",
+                  "a scene needs at least one MPM body or one FEM body "
+                  "('number of FEM bodies')");
+    require_input(fem_bodies.empty() || time.is_implicit(),
+                  "time",
+                  "integrator",
+                  time.is_implicit() ? "" : "an explicit integrator",
+                  "FEM bodies are integrated implicitly only: choose "
+                  "'implicit backward Euler' or 'implicit Newmark'");
   }
 
 
@@ -281,12 +316,15 @@ namespace bfemp
   SceneParameters<dim>::read(const std::string &file)
   {
     // Settle the counts of numbered subsections with lenient passes.
+    directory = std::filesystem::path(file).parent_path().string();
+    if (directory.empty())
+      directory = ".";
     std::vector<unsigned int> primitives(1, 1);
-    unsigned int              n_level_sets = 0;
+    unsigned int              n_level_sets = 0, n_fem_bodies = 0;
     for (unsigned int pass = 0;; ++pass)
       {
         ParameterHandler prm;
-        declare_parameters(prm, primitives, n_level_sets);
+        declare_parameters(prm, primitives, n_level_sets, n_fem_bodies);
         parse_prm_file(prm, file, true);
         std::vector<unsigned int> found(prm.get_integer("number of bodies"), 1);
         for (unsigned int b = 0; b < std::min(found.size(), primitives.size());
@@ -298,15 +336,18 @@ namespace bfemp
           }
         const unsigned int level_sets =
           GridBoundaries<dim>::parse_number_of_level_sets(prm);
-        if (found == primitives && level_sets == n_level_sets)
+        const unsigned int fem_bodies = prm.get_integer("number of FEM bodies");
+        if (found == primitives && level_sets == n_level_sets &&
+            fem_bodies == n_fem_bodies)
           break;
         primitives   = found;
         n_level_sets = level_sets;
+        n_fem_bodies = fem_bodies;
         AssertThrow(pass < 3, ExcInternalError());
       }
 
     ParameterHandler prm;
-    declare_parameters(prm, primitives, n_level_sets);
+    declare_parameters(prm, primitives, n_level_sets, n_fem_bodies);
     parse_prm_file(prm, file, false);
     try
       {

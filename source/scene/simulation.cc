@@ -22,19 +22,69 @@ namespace bfemp
     , grid(parameters.grid)
     , particle_system(grid)
     , transfer(grid, parameters.transfer, materials)
-    , integrator(grid,
-                 particle_system,
-                 transfer,
-                 parameters.boundaries,
-                 parameters.gravity,
-                 parameters.time.integrator)
   {
     if (parameters.run.threads > 0)
       MultithreadInfo::set_thread_limit(parameters.run.threads);
     for (const auto &body : parameters.bodies)
       materials.push_back(
         create_material<dim>(body.material.model, body.material.moduli()));
+    create_fem_bodies();
     create_bodies();
+    if (parameters.time.is_implicit())
+      implicit_integrator = std::make_unique<ImplicitIntegrator<dim>>(
+        grid,
+        particle_system,
+        transfer,
+        materials,
+        fem_body_list,
+        parameters.boundaries,
+        parameters.gravity,
+        parameters.time.implicit_scheme(),
+        parameters.solver);
+    else
+      explicit_integrator =
+        std::make_unique<ExplicitMPM<dim>>(grid,
+                                           particle_system,
+                                           transfer,
+                                           parameters.boundaries,
+                                           parameters.gravity,
+                                           parameters.time.integrator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::create_fem_bodies()
+  {
+    for (unsigned int b = 0; b < parameters.fem_bodies.size(); ++b)
+      fem_body_list.push_back(std::make_unique<FemBody<dim>>(
+        parameters.fem_bodies[b],
+        parameter_file + ": subsection 'fem body " + std::to_string(b) + "'"));
+  }
+
+
+
+  template <int dim>
+  std::vector<std::unique_ptr<FemBody<dim>>> &
+  Simulation<dim>::fem_bodies()
+  {
+    return fem_body_list;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::advance(const double dt, const double time)
+  {
+    if (implicit_integrator)
+      {
+        implicit_integrator->step(dt, time, step + 1);
+        newton_since_row += implicit_integrator->statistics();
+      }
+    else
+      explicit_integrator->step(dt, time);
   }
 
 
@@ -115,6 +165,8 @@ namespace bfemp
   Simulation<dim>::cfl_time_scale(const double max_speed) const
   {
     double wave_speed = 0.;
+    if (parameters.time.is_implicit())
+      return grid.lattice().dx / std::max(max_speed, 1e-300);
     for (unsigned int b = 0; b < materials.size(); ++b)
       wave_speed = std::max(wave_speed,
                             materials[b]->p_wave_speed(
@@ -134,7 +186,7 @@ namespace bfemp
     double                dt         = p.adaptive
                                          ? std::min(p.cfl_number * time_scale, p.maximum_time_step)
                                          : p.time_step;
-    if (dt / time_scale > p.maximum_cfl_number)
+    if (!p.is_implicit() && dt / time_scale > p.maximum_cfl_number)
       {
         std::ostringstream message;
         message << "step " << step + 1 << ", t = " << time
@@ -160,10 +212,13 @@ namespace bfemp
   StepDiagnostics<dim>
   Simulation<dim>::diagnostics() const
   {
-    return StepDiagnostics<dim>::measure(particle_system,
-                                         materials,
-                                         transfer,
-                                         parameters.gravity);
+    StepDiagnostics<dim> d = StepDiagnostics<dim>::measure(particle_system,
+                                                           materials,
+                                                           transfer,
+                                                           parameters.gravity);
+    if (!fem_body_list.empty())
+      d += StepDiagnostics<dim>::measure(fem_body_list, parameters.gravity);
+    return d;
   }
 
 
@@ -193,7 +248,7 @@ namespace bfemp
     if (!d.finite || !(d.min_J > 0.))
       {
         std::ostringstream message;
-        message << "step " << step << ": the particle state became "
+        message << "step " << step << ": the state became "
                 << (!d.finite ? "non-finite (NaN or inf)"
                               : "inverted (min det F = ")
                 << (d.finite ? std::to_string(d.min_J) + ")" : "")
@@ -212,7 +267,13 @@ namespace bfemp
     if (particle_output)
       particle_output->write(particle_system, time, snapshot);
     if (grid_output)
-      grid_output->write(integrator.grid_state(), time, snapshot);
+      grid_output->write(implicit_integrator
+                           ? implicit_integrator->grid_state()
+                           : explicit_integrator->grid_state(),
+                         time,
+                         snapshot);
+    if (fem_output)
+      fem_output->write(time, snapshot);
     ++snapshot;
   }
 
@@ -242,7 +303,8 @@ namespace bfemp
     // Files of an earlier run in the same folder would sit next to this
     // run's series and mislead; only bfemp's own file names are removed.
     const std::regex ours(
-      "(particles|grid)(_[0-9]+\\.vtu|\\.pvd)(\\.part)?|diagnostics\\.csv");
+      "(particles|grid|fem_body_[0-9]+)(_[0-9]+\\.vtu|\\.pvd)(\\.part)?|"
+      "diagnostics\\.csv");
     for (const auto &entry : std::filesystem::directory_iterator(output_folder))
       if (entry.is_regular_file() &&
           std::regex_match(entry.path().filename().string(), ours))
@@ -256,30 +318,55 @@ namespace bfemp
 
 
   template <int dim>
+  std::string
+  Simulation<dim>::scene_summary() const
+  {
+    std::ostringstream summary;
+    summary << particle_system.n_particles() << " particles, "
+            << grid.lattice().n_nodes << " grid nodes";
+    if (!fem_body_list.empty())
+      {
+        unsigned int n_nodes = 0, n_elements = 0;
+        for (const auto &body : fem_body_list)
+          {
+            n_nodes += body->n_nodes();
+            n_elements += body->elements().size();
+          }
+        summary << ", " << fem_body_list.size() << " FEM bodies (" << n_nodes
+                << " nodes, " << n_elements << " elements)";
+      }
+    return summary.str();
+  }
+
+
+
+  template <int dim>
   void
   Simulation<dim>::run()
   {
     const RunParameters &run = parameters.run;
     prepare_output_folder();
-    if (parameters.output.write_particles)
+    if (parameters.output.write_particles && particle_system.n_particles() > 0)
       particle_output =
         std::make_unique<ParticleOutput<dim>>(output_folder, materials);
-    if (parameters.output.write_grid)
+    if (parameters.output.write_grid && particle_system.n_particles() > 0)
       grid_output = std::make_unique<GridOutput<dim>>(output_folder, grid);
+    if (!fem_body_list.empty())
+      fem_output =
+        std::make_unique<FemOutput<dim>>(output_folder, fem_body_list);
     DiagnosticsWriter<dim> diagnostics_writer(output_folder +
-                                              "/diagnostics.csv");
+                                                "/diagnostics.csv",
+                                              parameters.time.is_implicit());
     ProgressReporter       progress(console,
                               run.end_time,
                               !run.quiet && !run.test_mode);
 
     if (run.test_mode)
-      console << "bfemp test run: " << dim << "D, "
-              << particle_system.n_particles() << " particles, "
-              << grid.lattice().n_nodes << " grid nodes" << std::endl;
+      console << "bfemp test run: " << dim << "D, " << scene_summary()
+              << std::endl;
     else
-      console << "bfemp: " << dim << "D, " << particle_system.n_particles()
-              << " particles, " << grid.lattice().n_nodes
-              << " grid nodes; output in " << output_folder << std::endl;
+      console << "bfemp: " << dim << "D, " << scene_summary() << "; output in "
+              << output_folder << std::endl;
 
     double               time  = 0.;
     StepDiagnostics<dim> state = diagnostics();
@@ -293,7 +380,7 @@ namespace bfemp
     while (time < run.end_time)
       {
         const double dt = next_time_step(time, state.max_speed);
-        integrator.step(dt, time);
+        advance(dt, time);
         time = (dt == run.end_time - time) ? run.end_time : time + dt;
         ++step;
 
@@ -307,13 +394,23 @@ namespace bfemp
                                      time,
                                      dt,
                                      state,
-                                     progress.wall_time());
+                                     progress.wall_time(),
+                                     newton_since_row,
+                                     implicit_integrator
+                                       ? implicit_integrator->n_dofs()
+                                       : 0);
+            newton_since_row = NewtonStatistics();
           }
         else
           // The next step's CFL check needs the current speed, not the one
           // of the last diagnosed step.
           state.max_speed =
-            StepDiagnostics<dim>::measure_max_speed(particle_system);
+            std::max(StepDiagnostics<dim>::measure_max_speed(particle_system),
+                     fem_body_list.empty()
+                       ? 0.
+                       : StepDiagnostics<dim>::measure(fem_body_list,
+                                                       parameters.gravity)
+                           .max_speed);
         if (snapshot_due)
           {
             write_snapshot(time);
@@ -322,7 +419,14 @@ namespace bfemp
             while (next_output <= time + 1e-9 * dt)
               next_output += std::max(parameters.output.interval, dt);
           }
-        progress.report(step, time, dt);
+        if (implicit_integrator)
+          progress.report(step,
+                          time,
+                          dt,
+                          implicit_integrator->statistics().iterations,
+                          implicit_integrator->n_dofs());
+        else
+          progress.report(step, time, dt);
       }
     if (!run.test_mode)
       console << "bfemp: finished " << step << " steps in "

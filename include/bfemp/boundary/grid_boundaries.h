@@ -42,7 +42,46 @@ namespace bfemp
           const double                 time) const;
 
 
+    /** A condition on one node in the implicit solve. */
+    struct NodeConstraint
+    {
+      std::size_t    node;
+      Tensor<2, dim> free_projector;
+      Tensor<1, dim> obstacle_velocity;
+    };
+
+    /**
+     * The conditions as constraints of the implicit solve (DofSpace), for
+     * the nodes with mass > 0 at the end of the step, @p time: sticky nodes
+     * move with the obstacle (projector 0), slip nodes keep only their
+     * tangential freedom (I - n n^T), and separable slip acts like slip on
+     * the nodes whose start-of-step @p velocity approaches the obstacle and
+     * not at all on the others (the contact set is lagged by a step).
+     * Coulomb friction of the walls is not applied in implicit steps;
+     * frictional boundaries there are FEM bodies with barrier contact.
+     */
+    std::vector<NodeConstraint>
+    implicit_constraints(const Lattice<dim>                &lattice,
+                         const std::vector<double>         &mass,
+                         const std::vector<Tensor<1, dim>> &velocity,
+                         const double                       time) const;
+
+    /** True if any wall or level set is set. */
+    bool
+    any() const;
+
   private:
+    /**
+     * f(condition, outward normal, obstacle velocity) for every wall and
+     * level set that contains lattice node @p node at @p time.
+     */
+    template <typename Function>
+    void
+    for_each_condition(const Lattice<dim> &lattice,
+                       const std::size_t   node,
+                       const double        time,
+                       const Function     &f) const;
+
     /** wall_active[2 d] is the lower face of direction d, [2 d + 1] upper. */
     std::array<bool, 2 * dim>  wall_active{};
     BoundaryCondition          wall_condition;

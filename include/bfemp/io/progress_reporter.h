@@ -7,7 +7,8 @@
 namespace bfemp
 {
   /**
-   * One line per step on the console: step, time, dt, wall time and an
+   * One line per step on the console: step, time, dt (Newton iterations and
+   * unknowns for implicit steps), wall time and an
    * estimate of the wall time to the end (from the average simulated time per
    * wall second so far). Silent in quiet and test mode.
    */
@@ -20,6 +21,14 @@ namespace bfemp
 
     void
     report(const unsigned int step, const double time, const double dt);
+
+    /** The line of an implicit step: also Newton iterations and unknowns. */
+    void
+    report(const unsigned int step,
+           const double       time,
+           const double       dt,
+           const unsigned int newton_iterations,
+           const unsigned int n_dofs);
 
     /** Wall seconds since construction. */
     double

@@ -1,6 +1,7 @@
 #ifndef bfemp_io_step_diagnostics_h
 #define bfemp_io_step_diagnostics_h
 
+#include <bfemp/fem/fem_body.h>
 #include <bfemp/material/material.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
@@ -12,7 +13,8 @@
 namespace bfemp
 {
   /**
-   * Global quantities of the particle state, the row of diagnostics.csv.
+   * Global quantities of the particle state and the FEM bodies, the row of
+   * diagnostics.csv.
    * Angular momentum about the origin includes APIC's affine part,
    * m_p eps : (C_p D_p), so that it is the quantity APIC conserves.
    */
@@ -43,6 +45,14 @@ namespace bfemp
             const std::vector<std::unique_ptr<Material<dim>>> &materials,
             const ParticleGridTransfer<dim>                   &transfer,
             const Tensor<1, dim>                              &gravity);
+
+    /**
+     * Measures the FEM bodies: lumped-mass kinetic energy and momentum, the
+     * element energies sum_e V_e psi(F_e), -m g.x and min det F_e.
+     */
+    static StepDiagnostics
+    measure(const std::vector<std::unique_ptr<FemBody<dim>>> &bodies,
+            const Tensor<1, dim>                             &gravity);
 
     /** max_p |v_p| alone, for the CFL check between diagnosed steps. */
     static double

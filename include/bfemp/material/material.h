@@ -1,8 +1,10 @@
 #ifndef bfemp_material_material_h
 #define bfemp_material_material_h
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -73,6 +75,20 @@ namespace bfemp
   protected:
     ElasticModuli elastic_moduli;
   };
+
+  /**
+   * The von Mises equivalent stress sqrt(3/2 s:s) of the deviator s of
+   * @p sigma. In 2D the out-of-plane stress is not tracked and the in-plane
+   * deviator is used, consistently across runs and outputs.
+   */
+  template <int dim>
+  double
+  von_mises_stress(const Tensor<2, dim> &sigma)
+  {
+    const Tensor<2, dim> deviator =
+      sigma - trace(sigma) / dim * Tensor<2, dim>(unit_symmetric_tensor<dim>());
+    return std::sqrt(1.5 * scalar_product(deviator, deviator));
+  }
 
   /**
    * Creates the material named by the prm entry `material/model`:

@@ -3,10 +3,12 @@
 
 #include <bfemp/base/run_parameters.h>
 #include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/fem/fem_body_parameters.h>
 #include <bfemp/grid/grid_parameters.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/io/output_parameters.h>
 #include <bfemp/particles/body_parameters.h>
+#include <bfemp/solver/solver_parameters.h>
 #include <bfemp/transfer/transfer_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -19,21 +21,26 @@ namespace bfemp
   /**
    * Everything a scene prm file says, one struct per subsection. The file is
    * read in passes: the counts that decide which subsections exist ("number
-   * of bodies", each body's "number of primitives", "number of level sets")
+   * of bodies", each body's "number of primitives", "number of level sets",
+   * "number of FEM bodies")
    * are read leniently until they settle, then the whole file is parsed
    * strictly, so any unknown or malformed entry is reported with its line.
    */
   template <int dim>
   struct SceneParameters
   {
-    RunParameters                    run;
-    GridParameters<dim>              grid;
-    TimeParameters                   time;
-    TransferParameters               transfer;
-    Tensor<1, dim>                   gravity;
-    GridBoundaries<dim>              boundaries;
-    OutputParameters                 output;
-    std::vector<BodyParameters<dim>> bodies;
+    RunParameters                       run;
+    GridParameters<dim>                 grid;
+    TimeParameters                      time;
+    TransferParameters                  transfer;
+    Tensor<1, dim>                      gravity;
+    GridBoundaries<dim>                 boundaries;
+    OutputParameters                    output;
+    std::vector<BodyParameters<dim>>    bodies;
+    std::vector<FemBodyParameters<dim>> fem_bodies;
+    SolverParameters                    solver;
+    /** Directory of the prm file: relative mesh files are found there. */
+    std::string directory = ".";
 
     /** Reads and checks @p file; throws InputError naming file and entry. */
     void
@@ -43,7 +50,8 @@ namespace bfemp
     static void
     declare_parameters(ParameterHandler                &prm,
                        const std::vector<unsigned int> &primitives_per_body,
-                       const unsigned int               n_level_sets);
+                       const unsigned int               n_level_sets,
+                       const unsigned int               n_fem_bodies);
 
     void
     parse_parameters(ParameterHandler &prm);

@@ -1,9 +1,12 @@
 #ifndef bfemp_scene_simulation_h
 #define bfemp_scene_simulation_h
 
+#include <bfemp/fem/fem_body.h>
 #include <bfemp/grid/background_grid.h>
 #include <bfemp/integrator/explicit_mpm.h>
+#include <bfemp/integrator/implicit_integrator.h>
 #include <bfemp/io/diagnostics_writer.h>
+#include <bfemp/io/fem_output.h>
 #include <bfemp/io/grid_output.h>
 #include <bfemp/io/particle_output.h>
 #include <bfemp/io/progress_reporter.h>
@@ -44,6 +47,10 @@ namespace bfemp
     ParticleSystem<dim> &
     particles();
 
+    /** The FEM bodies, e.g. to inspect or set their state before run(). */
+    std::vector<std::unique_ptr<FemBody<dim>>> &
+    fem_bodies();
+
     /** The diagnostics of the current state. */
     StepDiagnostics<dim>
     diagnostics() const;
@@ -53,9 +60,20 @@ namespace bfemp
     void
     create_bodies();
 
-    /** dx / (c_p + max |v_p|): the explicit CFL time scale. */
+    /** Builds the FEM bodies' meshes and elements. */
+    void
+    create_fem_bodies();
+
+    /**
+     * dx / (c_p + max |v_p|): the explicit CFL time scale; implicit steps
+     * have no wave-speed limit, and their scale is dx / max |v|.
+     */
     double
     cfl_time_scale(const double max_speed) const;
+
+    /** One step of the chosen integrator. */
+    void
+    advance(const double dt, const double time);
 
     /** The next dt; throws if a fixed dt breaks the CFL limit. */
     double
@@ -72,6 +90,10 @@ namespace bfemp
     void
     write_snapshot(const double time);
 
+    /** "N particles, M grid nodes[, K FEM bodies (...)]". */
+    std::string
+    scene_summary() const;
+
     void
     print_test_summary(const double time, const StepDiagnostics<dim> &d) const;
 
@@ -82,12 +104,17 @@ namespace bfemp
     std::vector<std::unique_ptr<Material<dim>>> materials;
     ParticleSystem<dim>                         particle_system;
     ParticleGridTransfer<dim>                   transfer;
-    ExplicitMPM<dim>                            integrator;
-    std::string                                 output_folder;
-    std::unique_ptr<ParticleOutput<dim>>        particle_output;
-    std::unique_ptr<GridOutput<dim>>            grid_output;
-    unsigned int                                step     = 0;
-    unsigned int                                snapshot = 0;
+    std::vector<std::unique_ptr<FemBody<dim>>>  fem_body_list;
+    std::unique_ptr<ExplicitMPM<dim>>           explicit_integrator;
+    std::unique_ptr<ImplicitIntegrator<dim>>    implicit_integrator;
+    /** Newton statistics since the last diagnostics row. */
+    NewtonStatistics                     newton_since_row;
+    std::string                          output_folder;
+    std::unique_ptr<ParticleOutput<dim>> particle_output;
+    std::unique_ptr<GridOutput<dim>>     grid_output;
+    std::unique_ptr<FemOutput<dim>>      fem_output;
+    unsigned int                         step     = 0;
+    unsigned int                         snapshot = 0;
   };
 } // namespace bfemp
 

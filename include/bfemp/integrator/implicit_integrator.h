@@ -1,0 +1,133 @@
+#ifndef bfemp_integrator_implicit_integrator_h
+#define bfemp_integrator_implicit_integrator_h
+
+#include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/fem/fem_body.h>
+#include <bfemp/grid/grid_state.h>
+#include <bfemp/integrator/time_parameters.h>
+#include <bfemp/particles/particle_system.h>
+#include <bfemp/solver/dof_space.h>
+#include <bfemp/solver/fem_elasticity_term.h>
+#include <bfemp/solver/incremental_potential.h>
+#include <bfemp/solver/inertia_term.h>
+#include <bfemp/solver/mpm_elasticity_term.h>
+#include <bfemp/solver/newton_solver.h>
+#include <bfemp/transfer/particle_grid_transfer.h>
+
+#include <memory>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * Implicit time integration of MPM bodies and FEM bodies in one
+   * incremental potential (BFEMP Sections 2.2, 3 and 5, Algorithm 1 without
+   * contact): backward Euler or midpoint Newmark through the (alpha, beta,
+   * gamma) family of eq. 21, minimized by projected Newton (Algorithm 2).
+   *
+   * One step, as step() spells it out:
+   *   P2G (Tables 1-3) -> unified DoFs of FEM nodes and active grid nodes
+   *   -> constraints (prescribed FEM nodes, grid boundaries)
+   *   -> predictor x^ = x^n + dt v^n + alpha (1 - 2 beta) dt^2 a^n
+   *   -> minimize 1/2 ||x - x^||_M^2 + 2 alpha beta dt^2 Psi(x) (eq. 22)
+   *   -> v^{n+1} = v^n + dt ((1 - gamma) a^n + gamma a^{n+1}) (eq. 21)
+   *   -> FEM nodes move; G2P of x~, v~ and F (Tables 1-3).
+   */
+  template <int dim>
+  class ImplicitIntegrator
+  {
+  public:
+    ImplicitIntegrator(
+      const BackgroundGrid<dim>                         &grid,
+      ParticleSystem<dim>                               &particles,
+      const ParticleGridTransfer<dim>                   &transfer,
+      const std::vector<std::unique_ptr<Material<dim>>> &materials,
+      std::vector<std::unique_ptr<FemBody<dim>>>        &fem_bodies,
+      const GridBoundaries<dim>                         &boundaries,
+      const Tensor<1, dim>                              &gravity,
+      const TimeParameters::ImplicitScheme              &scheme,
+      const SolverParameters                            &solver);
+
+    /** Advances from @p time to time + dt; throws SimulationError. */
+    void
+    step(const double dt, const double time, const unsigned int step_number);
+
+    /** The grid fields of the last step (for output). */
+    const GridState<dim> &
+    grid_state() const;
+
+    /** Newton statistics of the last step. */
+    const NewtonStatistics &
+    statistics() const;
+
+    /** Unknowns of the last step. */
+    unsigned int
+    n_dofs() const;
+
+  private:
+    /** P2G of mass and momentum (Algorithm 1 line 2); v = (m v) / m. */
+    void
+    particles_to_grid();
+
+    /** Numbers FEM nodes and active grid nodes; gathers m and v^n. */
+    void
+    number_unknowns();
+
+    /** Prescribed FEM nodes and grid boundary conditions at t + dt. */
+    void
+    constrain(const double dt, const double end_time);
+
+    /** a^n = -M^-1 grad Psi(x^n) + g (Newmark's start acceleration). */
+    Vector<double>
+    start_acceleration() const;
+
+    /** u^ = dt v^n + alpha (1 - 2 beta) dt^2 a^n + 2 alpha beta dt^2 g. */
+    Vector<double>
+    predictor(const Vector<double> &acceleration, const double dt) const;
+
+    /**
+     * v^{n+1} of eq. 21 with a^{n+1} = (u - u^) / (2 alpha beta dt^2) + g;
+     * constrained nodes take their prescribed velocity in the constrained
+     * directions.
+     */
+    Vector<double>
+    end_velocity(const Vector<double> &u,
+                 const Vector<double> &predicted,
+                 const Vector<double> &acceleration,
+                 const double          dt) const;
+
+    /** x^{n+1} = x^n + u, v^{n+1} for the FEM nodes (Algorithm 1 line 11). */
+    void
+    update_fem_bodies(const Vector<double> &u, const Vector<double> &velocity);
+
+    /** G2P of x~, v~ and F (Algorithm 1 line 12). */
+    void
+    grid_to_particles(const Vector<double> &u, const Vector<double> &velocity);
+
+    const BackgroundGrid<dim>                  &grid;
+    ParticleSystem<dim>                        &particles;
+    const ParticleGridTransfer<dim>            &transfer;
+    std::vector<std::unique_ptr<FemBody<dim>>> &fem_bodies;
+    const GridBoundaries<dim>                  &boundaries;
+    const Tensor<1, dim>                        gravity;
+    const TimeParameters::ImplicitScheme        scheme;
+    const bool                                  with_mpm;
+
+    DofSpace<dim>             dofs;
+    InertiaTerm<dim>          inertia;
+    FemElasticityTerm<dim>    fem_elasticity;
+    MpmElasticityTerm<dim>    mpm_elasticity;
+    IncrementalPotential<dim> potential;
+    NewtonSolver<dim>         newton;
+
+    GridState<dim>      state;
+    std::vector<double> node_mass;
+    Vector<double>      start_velocity;
+    /** Velocity of each constraint's target, by constraint index. */
+    std::vector<Tensor<1, dim>> constraint_velocity;
+    double                      scale = 0.;
+    NewtonStatistics            last_statistics;
+  };
+} // namespace bfemp
+
+#endif

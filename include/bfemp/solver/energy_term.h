@@ -1,0 +1,69 @@
+#ifndef bfemp_solver_energy_term_h
+#define bfemp_solver_energy_term_h
+
+#include <bfemp/solver/node_sparsity.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <limits>
+#include <string>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * One additive part of the incremental potential E(u) of BFEMP eq. 22 (and
+   * eq. 38 once contact and friction join): inertia, FEM elasticity, MPM
+   * elasticity, ... Each is a function of the unified displacement vector u
+   * (see DofSpace) and supplies what projected Newton needs: its value,
+   * gradient, a positive semi-definite Hessian (local Hessians projected
+   * before assembly) and the largest admissible step along a direction.
+   */
+  template <int dim>
+  class EnergyTerm
+  {
+  public:
+    virtual ~EnergyTerm() = default;
+
+    /** Name for diagnostics and messages. */
+    virtual std::string
+    name() const = 0;
+
+    /** Adds the node couplings of this term's Hessian. */
+    virtual void
+    add_couplings(NodeSparsity &sparsity) const = 0;
+
+    /** The term's energy at u; +inf or NaN where it is not defined. */
+    virtual double
+    value(const Vector<double> &u) const = 0;
+
+    virtual void
+    add_gradient(const Vector<double> &u, Vector<double> &gradient) const = 0;
+
+    /** Adds a positive semi-definite approximation of the Hessian. */
+    virtual void
+    add_hessian(const Vector<double> &u,
+                SparseMatrix<double> &hessian) const = 0;
+
+    /**
+     * The smallest t > 0 at which u + t p leaves the term's domain (a det F
+     * reaching 0, a contact distance reaching 0); +inf if nothing limits.
+     */
+    virtual double
+    step_bound(const Vector<double> &, const Vector<double> &) const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
+    /** Smallest det F of the term at u (+inf if it has none). */
+    virtual double
+    minimum_determinant(const Vector<double> &) const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,90 @@
+#ifndef bfemp_solver_incremental_potential_h
+#define bfemp_solver_incremental_potential_h
+
+#include <bfemp/solver/dof_space.h>
+#include <bfemp/solver/energy_term.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * The incremental potential E(u) of one implicit step, BFEMP eq. 22 (eq. 38
+   * with contact), as the sum of its energy terms over the unified DoF space,
+   * restricted to the displacements the node constraints allow.
+   *
+   * With the block-diagonal projector P of the constraints (DofSpace), the
+   * free problem is min E(P u + (I - P) target): its gradient is P grad E
+   * and its Hessian P H P. Adding (I - P) on the diagonal keeps the matrix
+   * nonsingular, and the Newton direction then satisfies p = P p, so
+   * iterates keep meeting the constraints.
+   */
+  template <int dim>
+  class IncrementalPotential
+  {
+  public:
+    explicit IncrementalPotential(const DofSpace<dim> &dofs);
+
+    /** The terms of E; not owned. */
+    void
+    set_terms(const std::vector<const EnergyTerm<dim> *> &terms);
+
+    /** Builds the sparsity pattern of the Hessian from the terms. */
+    void
+    setup_system();
+
+    double
+    value(const Vector<double> &u) const;
+
+    /** Each term's value at u, in the order of set_terms(). */
+    std::vector<double>
+    term_values(const Vector<double> &u) const;
+
+    /** P grad E(u). */
+    void
+    gradient(const Vector<double> &u, Vector<double> &gradient) const;
+
+    /** P H(u) P + (I - P) with H the sum of the terms' PSD Hessians. */
+    const SparseMatrix<double> &
+    hessian(const Vector<double> &u);
+
+    /** The smallest step bound of any term along p. */
+    double
+    step_bound(const Vector<double> &u, const Vector<double> &p) const;
+
+    /** Smallest det F of any element or particle at u. */
+    double
+    minimum_determinant(const Vector<double> &u) const;
+
+    const SparsityPattern &
+    sparsity_pattern() const;
+
+    const DofSpace<dim> &
+    dof_space() const;
+
+  private:
+    /** H <- P H P + (I - P) for the constrained nodes. */
+    void
+    apply_constraints();
+
+    /** The dim x dim block (i, j) of the Hessian. */
+    Tensor<2, dim>
+    block(const unsigned int i, const unsigned int j) const;
+
+    void
+    set_block(const unsigned int    i,
+              const unsigned int    j,
+              const Tensor<2, dim> &b);
+
+    const DofSpace<dim>                 &dofs;
+    std::vector<const EnergyTerm<dim> *> terms;
+    SparsityPattern                      pattern;
+    SparseMatrix<double>                 matrix;
+  };
+} // namespace bfemp
+
+#endif

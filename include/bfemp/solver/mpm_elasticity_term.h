@@ -1,0 +1,106 @@
+#ifndef bfemp_solver_mpm_elasticity_term_h
+#define bfemp_solver_mpm_elasticity_term_h
+
+#include <bfemp/grid/background_grid.h>
+#include <bfemp/material/material.h>
+#include <bfemp/particles/particle_system.h>
+#include <bfemp/solver/dof_space.h>
+#include <bfemp/solver/energy_term.h>
+
+#include <memory>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * The elastic energy of the MPM particles as a function of the grid
+   * displacements, 2 alpha beta dt^2 sum_p V_p^0 psi(F_p(u)) (BFEMP eq. 22),
+   * with the particle deformation gradient of eq. 25 written in
+   * displacements,
+   * @f[
+   *   F_p(u) = \Big(I + \sum_i u_i (\nabla w_{ip})^T\Big) F_p^n
+   *          = F_p^n + \sum_i u_i \hat g_{ip}^T,
+   *   \quad \hat g_{ip} = (F_p^n)^T \nabla w_{ip},
+   * @f]
+   * which equals eq. 25 because the B-spline kernels reproduce linear
+   * fields (sum_i x_i grad w_ip^T = I). F_p is linear in u, so
+   * dF_p/du_i = g^_ip and the Hessian blocks are
+   * H_ij = s V_p^0 (dP/dF : g^_ip g^_jp), with dP/dF projected onto the
+   * PSD cone per particle before the chain rule (projected Newton).
+   *
+   * Particles stay where they are during the Newton iterations (they move
+   * in the G2P after the solve), so the kernel weights are those of the
+   * step's start and are recomputed on the fly rather than stored.
+   */
+  template <int dim>
+  class MpmElasticityTerm : public EnergyTerm<dim>
+  {
+  public:
+    MpmElasticityTerm(
+      const BackgroundGrid<dim>                         &grid,
+      ParticleSystem<dim>                               &particles,
+      const std::vector<std::unique_ptr<Material<dim>>> &materials,
+      const DofSpace<dim>                               &dofs);
+
+    /** s = 2 alpha beta dt^2, the weight of Psi in eq. 22. */
+    void
+    set_scale(const double scale);
+
+    std::string
+    name() const override;
+
+    void
+    add_couplings(NodeSparsity &sparsity) const override;
+
+    double
+    value(const Vector<double> &u) const override;
+
+    void
+    add_gradient(const Vector<double> &u,
+                 Vector<double>       &gradient) const override;
+
+    void
+    add_hessian(const Vector<double> &u,
+                SparseMatrix<double> &hessian) const override;
+
+    /** Smallest positive root over particles of det F_p(u + t p) = 0. */
+    double
+    step_bound(const Vector<double> &u, const Vector<double> &p) const override;
+
+    double
+    minimum_determinant(const Vector<double> &u) const override;
+
+  private:
+    template <int degree>
+    double
+    value(const Vector<double> &u) const;
+
+    template <int degree>
+    void
+    add_gradient(const Vector<double> &u, Vector<double> &gradient) const;
+
+    template <int degree>
+    void
+    add_hessian(const Vector<double> &u, SparseMatrix<double> &hessian) const;
+
+    template <int degree>
+    double
+    step_bound(const Vector<double> &u, const Vector<double> &p) const;
+
+    template <int degree>
+    double
+    minimum_determinant(const Vector<double> &u) const;
+
+    template <int degree>
+    void
+    add_couplings(NodeSparsity &sparsity) const;
+
+    const BackgroundGrid<dim>                         &grid;
+    ParticleSystem<dim>                               &particles;
+    const std::vector<std::unique_ptr<Material<dim>>> &materials;
+    const DofSpace<dim>                               &dofs;
+    double                                             scale = 1.;
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,86 @@
+#ifndef bfemp_solver_newton_solver_h
+#define bfemp_solver_newton_solver_h
+
+#include <bfemp/solver/incremental_potential.h>
+#include <bfemp/solver/linear_solver.h>
+#include <bfemp/solver/solver_parameters.h>
+
+#include <memory>
+#include <string>
+
+namespace bfemp
+{
+  /** What one minimization cost and how it ended (diagnostics columns). */
+  struct NewtonStatistics
+  {
+    unsigned int iterations = 0;
+    /** Step halvings of the Armijo line search, summed over iterations. */
+    unsigned int backtracks = 0;
+    /** Iterations whose first trial step was cut by the det F bound. */
+    unsigned int bound_hits = 0;
+    /** ||p||_inf / dt of the last iteration [m/s]. */
+    double residual = 0.;
+    /** E at the minimizer. */
+    double energy = 0.;
+    /** Smallest det F over accepted iterates (with check invariants). */
+    double minimum_determinant = 0.;
+    double assembly_time       = 0.;
+    double factorization_time  = 0.;
+    double solve_time          = 0.;
+    double line_search_time    = 0.;
+
+    NewtonStatistics &
+    operator+=(const NewtonStatistics &other);
+  };
+
+
+
+  /**
+   * Projected Newton with a filtered backtracking line search (BFEMP
+   * Algorithm 2). Each iteration assembles the gradient and the projected
+   * (PSD) Hessian, solves H p = -g, starts the line search at the fraction
+   * 'step bound fraction' of the largest step that keeps every det F > 0
+   * (and every contact distance > 0), capped at 1, and halves it until the
+   * Armijo condition holds. It stops when ||p||_inf / dt < eps_d.
+   */
+  template <int dim>
+  class NewtonSolver
+  {
+  public:
+    explicit NewtonSolver(const SolverParameters &parameters);
+
+    /**
+     * Minimizes @p potential starting from @p u (which must meet the
+     * constraints and have every det F > 0); throws SimulationError naming
+     * @p step_label, the residual and the energy if it does not converge.
+     */
+    NewtonStatistics
+    minimize(IncrementalPotential<dim> &potential,
+             Vector<double>            &u,
+             const double               dt,
+             const std::string         &step_label);
+
+    const LinearSolver &
+    linear_solver() const;
+
+  private:
+    /**
+     * Backtracks from the bounded trial step; returns the accepted step
+     * length (0 if no step decreased E enough).
+     */
+    double
+    line_search(const IncrementalPotential<dim> &potential,
+                const Vector<double>            &u,
+                const Vector<double>            &p,
+                const double                     energy,
+                const double                     slope,
+                Vector<double>                  &trial,
+                double                          &trial_energy,
+                NewtonStatistics                &statistics) const;
+
+    const SolverParameters        parameters;
+    std::unique_ptr<LinearSolver> solver;
+  };
+} // namespace bfemp
+
+#endif

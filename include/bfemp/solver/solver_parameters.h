@@ -1,0 +1,44 @@
+#ifndef bfemp_solver_solver_parameters_h
+#define bfemp_solver_solver_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * prm subsection "solver": the projected Newton minimization of the
+   * incremental potential (BFEMP Section 5, Algorithm 2) and its linear
+   * solver. Read by the implicit integrators only.
+   */
+  struct SolverParameters
+  {
+    /** eps_d: Newton stops when ||p||_inf / dt < eps_d [m/s]. */
+    double newton_tolerance = 1e-6;
+    /** A step that needs more iterations stops the run. */
+    unsigned int maximum_newton_iterations = 100;
+    /** "CHOLMOD", "UMFPACK" or "CG AMG". */
+    std::string linear_solver = "CHOLMOD";
+    /** Relative residual of CG with AMG. */
+    double cg_tolerance = 1e-10;
+    /** Sufficient-decrease constant c of E(x + tp) <= E(x) + c t g.p. */
+    double armijo_constant = 1e-4;
+    /** The first trial step is this fraction of the det F > 0 bound. */
+    double step_bound_fraction = 0.9;
+    /** Halvings of the step before the line search gives up. */
+    unsigned int maximum_backtracks = 60;
+    /** Assert det F > 0 at every accepted iterate (tests). */
+    bool check_invariants = false;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace bfemp
+
+#endif

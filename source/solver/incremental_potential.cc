@@ -1,0 +1,206 @@
+#include <bfemp/solver/incremental_potential.h>
+#include <bfemp/solver/node_sparsity.h>
+
+#include <limits>
+
+namespace bfemp
+{
+  template <int dim>
+  IncrementalPotential<dim>::IncrementalPotential(const DofSpace<dim> &dofs)
+    : dofs(dofs)
+  {}
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::set_terms(
+    const std::vector<const EnergyTerm<dim> *> &new_terms)
+  {
+    terms = new_terms;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::setup_system()
+  {
+    NodeSparsity node_sparsity(dofs.n_nodes());
+    for (const EnergyTerm<dim> *term : terms)
+      term->add_couplings(node_sparsity);
+    matrix.clear();
+    node_sparsity.build(dim, pattern);
+    matrix.reinit(pattern);
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementalPotential<dim>::value(const Vector<double> &u) const
+  {
+    double energy = 0.;
+    for (const EnergyTerm<dim> *term : terms)
+      energy += term->value(u);
+    return energy;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  IncrementalPotential<dim>::term_values(const Vector<double> &u) const
+  {
+    std::vector<double> values;
+    for (const EnergyTerm<dim> *term : terms)
+      values.push_back(term->value(u));
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::gradient(const Vector<double> &u,
+                                      Vector<double>       &g) const
+  {
+    g.reinit(dofs.n_dofs());
+    for (const EnergyTerm<dim> *term : terms)
+      term->add_gradient(u, g);
+    dofs.project(g);
+  }
+
+
+
+  template <int dim>
+  const SparseMatrix<double> &
+  IncrementalPotential<dim>::hessian(const Vector<double> &u)
+  {
+    matrix = 0.;
+    for (const EnergyTerm<dim> *term : terms)
+      term->add_hessian(u, matrix);
+    apply_constraints();
+    return matrix;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  IncrementalPotential<dim>::block(const unsigned int i,
+                                   const unsigned int j) const
+  {
+    Tensor<2, dim> b;
+    for (unsigned int r = 0; r < dim; ++r)
+      for (unsigned int c = 0; c < dim; ++c)
+        b[r][c] = matrix.el(dim * i + r, dim * j + c);
+    return b;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::set_block(const unsigned int    i,
+                                       const unsigned int    j,
+                                       const Tensor<2, dim> &b)
+  {
+    for (unsigned int r = 0; r < dim; ++r)
+      for (unsigned int c = 0; c < dim; ++c)
+        matrix.set(dim * i + r, dim * j + c, b[r][c]);
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::apply_constraints()
+  {
+    const auto &constraints = dofs.constraints();
+    if (constraints.empty())
+      return;
+    const Tensor<2, dim> identity     = unit_symmetric_tensor<dim>();
+    auto                 projector_of = [&](const unsigned int node) {
+      const unsigned int c = dofs.constraint_index(node);
+      return c == DofSpace<dim>::invalid ? identity
+                                                         : constraints[c].free_projector;
+    };
+    // Block (i, j) becomes P_i H_ij P_j. Each block touching a constrained
+    // node is rewritten once: from the row of the constrained node i, and
+    // its mirror (j, i) unless j is constrained too (then row j does it).
+    for (const auto &constraint : constraints)
+      {
+        const unsigned int i   = constraint.node;
+        const auto        &P_i = constraint.free_projector;
+        for (auto entry = pattern.begin(dim * i); entry != pattern.end(dim * i);
+             ++entry)
+          {
+            if (entry->column() % dim != 0)
+              continue;
+            const unsigned int j = entry->column() / dim;
+            const bool         j_constrained =
+              dofs.constraint_index(j) != DofSpace<dim>::invalid;
+            if (j_constrained && j < i)
+              continue; // done from row j
+            const Tensor<2, dim> P_j  = projector_of(j);
+            const Tensor<2, dim> H_ij = block(i, j);
+            if (j == i)
+              set_block(i, i, P_i * H_ij * P_i + identity - P_i);
+            else
+              {
+                set_block(i, j, P_i * H_ij * P_j);
+                set_block(j, i, P_j * block(j, i) * P_i);
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementalPotential<dim>::step_bound(const Vector<double> &u,
+                                        const Vector<double> &p) const
+  {
+    double bound = std::numeric_limits<double>::infinity();
+    for (const EnergyTerm<dim> *term : terms)
+      bound = std::min(bound, term->step_bound(u, p));
+    return bound;
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementalPotential<dim>::minimum_determinant(const Vector<double> &u) const
+  {
+    double minimum = std::numeric_limits<double>::infinity();
+    for (const EnergyTerm<dim> *term : terms)
+      minimum = std::min(minimum, term->minimum_determinant(u));
+    return minimum;
+  }
+
+
+
+  template <int dim>
+  const SparsityPattern &
+  IncrementalPotential<dim>::sparsity_pattern() const
+  {
+    return pattern;
+  }
+
+
+
+  template <int dim>
+  const DofSpace<dim> &
+  IncrementalPotential<dim>::dof_space() const
+  {
+    return dofs;
+  }
+
+
+
+  template class IncrementalPotential<2>;
+  template class IncrementalPotential<3>;
+} // namespace bfemp

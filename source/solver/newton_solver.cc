@@ -1,0 +1,190 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/solver/newton_solver.h>
+
+#include <deal.II/base/timer.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace bfemp
+{
+  NewtonStatistics &
+  NewtonStatistics::operator+=(const NewtonStatistics &other)
+  {
+    iterations += other.iterations;
+    backtracks += other.backtracks;
+    bound_hits += other.bound_hits;
+    residual            = other.residual;
+    energy              = other.energy;
+    minimum_determinant = other.minimum_determinant;
+    assembly_time += other.assembly_time;
+    factorization_time += other.factorization_time;
+    solve_time += other.solve_time;
+    line_search_time += other.line_search_time;
+    return *this;
+  }
+
+
+
+  template <int dim>
+  NewtonSolver<dim>::NewtonSolver(const SolverParameters &parameters)
+    : parameters(parameters)
+    , solver(create_linear_solver(linear_solver_type_from_string(
+                                    parameters.linear_solver),
+                                  parameters.cg_tolerance))
+  {}
+
+
+
+  template <int dim>
+  const LinearSolver &
+  NewtonSolver<dim>::linear_solver() const
+  {
+    return *solver;
+  }
+
+
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::line_search(const IncrementalPotential<dim> &potential,
+                                 const Vector<double>            &u,
+                                 const Vector<double>            &p,
+                                 const double                     energy,
+                                 const double                     slope,
+                                 Vector<double>                  &trial,
+                                 double                          &trial_energy,
+                                 NewtonStatistics &statistics) const
+  {
+    // Filtering (Section 5): no trial point may reach det F = 0 or a
+    // contact distance of 0, so start below the first such root.
+    const double bound = potential.step_bound(u, p);
+    double       step  = 1.;
+    if (parameters.step_bound_fraction * bound < 1.)
+      {
+        step = parameters.step_bound_fraction * bound;
+        ++statistics.bound_hits;
+      }
+    // Near the minimizer the decrease t |g.p| falls below the round-off of
+    // E itself, and comparing energies decides nothing. There a trial point
+    // is accepted if E did not grow beyond round-off; the Newton residual,
+    // not the energy, then ends the iteration.
+    const double round_off =
+      64. * std::numeric_limits<double>::epsilon() * std::abs(energy);
+    const bool unresolved = std::abs(slope) <= round_off;
+    for (unsigned int k = 0; k <= parameters.maximum_backtracks; ++k)
+      {
+        trial = u;
+        trial.add(step, p);
+        trial_energy = potential.value(trial);
+        if (std::isfinite(trial_energy) &&
+            (trial_energy <=
+               energy + parameters.armijo_constant * step * slope ||
+             (unresolved && trial_energy <= energy + round_off)))
+          return step;
+        step *= 0.5;
+        ++statistics.backtracks;
+      }
+    return 0.;
+  }
+
+
+
+  template <int dim>
+  NewtonStatistics
+  NewtonSolver<dim>::minimize(IncrementalPotential<dim> &potential,
+                              Vector<double>            &u,
+                              const double               dt,
+                              const std::string         &step_label)
+  {
+    NewtonStatistics statistics;
+    Timer            timer;
+    Vector<double>   gradient, direction(u.size()), trial(u.size());
+    double           energy = potential.value(u);
+    if (!std::isfinite(energy))
+      throw SimulationError(step_label +
+                            ": the incremental potential is not finite at "
+                            "the initial guess (an inverted element or "
+                            "particle, or a NaN in the state)");
+
+    auto fail = [&](const std::string &what) {
+      std::ostringstream message;
+      message << step_label << ": " << what << " after "
+              << statistics.iterations << " Newton iterations (residual "
+              << "||p||_inf / dt = " << statistics.residual
+              << " m/s, 'solver/Newton tolerance' = "
+              << parameters.newton_tolerance << " m/s, energy " << energy
+              << " J). Reduce the time step, or raise 'solver/maximum Newton "
+                 "iterations'.";
+      throw SimulationError(message.str());
+    };
+
+    while (true)
+      {
+        if (statistics.iterations == parameters.maximum_newton_iterations)
+          fail("no convergence");
+        ++statistics.iterations;
+
+        timer.restart();
+        potential.gradient(u, gradient);
+        const SparseMatrix<double> &hessian = potential.hessian(u);
+        statistics.assembly_time += timer.wall_time();
+
+        timer.restart();
+        solver->factorize(hessian);
+        statistics.factorization_time += timer.wall_time();
+
+        timer.restart();
+        gradient *= -1.;
+        solver->solve(gradient, direction);
+        statistics.solve_time += timer.wall_time();
+        if (!std::isfinite(direction.linfty_norm()))
+          fail("the linear solver returned a non-finite Newton direction");
+        statistics.residual = direction.linfty_norm() / dt;
+
+        timer.restart();
+        // gradient holds -g: the slope along p is g.p = -(-g).p.
+        const double slope        = -(gradient * direction);
+        double       trial_energy = energy;
+        const double step         = statistics.residual == 0.
+                                      ? 0.
+                                      : line_search(potential,
+                                            u,
+                                            direction,
+                                            energy,
+                                            slope,
+                                            trial,
+                                            trial_energy,
+                                            statistics);
+        statistics.line_search_time += timer.wall_time();
+
+        if (step > 0.)
+          {
+            u.swap(trial);
+            energy = trial_energy;
+          }
+        if (parameters.check_invariants)
+          {
+            statistics.minimum_determinant = potential.minimum_determinant(u);
+            if (!(statistics.minimum_determinant > 0.))
+              fail("an accepted iterate has det F = " +
+                   std::to_string(statistics.minimum_determinant) +
+                   " <= 0 (invariant check)");
+          }
+        if (statistics.residual < parameters.newton_tolerance)
+          break;
+        if (step == 0.)
+          {
+            fail("the line search found no decrease of the energy");
+          }
+      }
+    statistics.energy = energy;
+    return statistics;
+  }
+
+
+
+  template class NewtonSolver<2>;
+  template class NewtonSolver<3>;
+} // namespace bfemp

@@ -1,0 +1,99 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/solver/solver_parameters.h>
+
+namespace bfemp
+{
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("solver");
+    prm.declare_entry("Newton tolerance",
+                      "1e-6",
+                      Patterns::Double(),
+                      "[m/s] eps_d: Newton stops when the largest entry of "
+                      "the Newton increment divided by dt, ||p||_inf / dt, "
+                      "falls below this (BFEMP Section 5); > 0.");
+    prm.declare_entry("maximum Newton iterations",
+                      "100",
+                      Patterns::Integer(1),
+                      "[-] A time step that has not converged after this "
+                      "many iterations stops the run with a message; the "
+                      "output up to the last converged step stays.");
+    prm.declare_entry("linear solver",
+                      "CHOLMOD",
+                      Patterns::Selection("CHOLMOD|UMFPACK|CG AMG"),
+                      "[-] CHOLMOD: SuiteSparse supernodal Cholesky (the "
+                      "symbolic analysis is reused while the sparsity "
+                      "pattern is unchanged); UMFPACK: deal.II's LU; CG AMG: "
+                      "Trilinos conjugate gradients with ML algebraic "
+                      "multigrid, for large 3D problems.");
+    prm.declare_entry("CG tolerance",
+                      "1e-10",
+                      Patterns::Double(),
+                      "[-] Relative residual at which CG AMG stops, in "
+                      "(0, 1).");
+    prm.declare_entry("Armijo constant",
+                      "1e-4",
+                      Patterns::Double(),
+                      "[-] c of the sufficient decrease E(x + t p) <= E(x) + "
+                      "c t grad E . p, in [0, 0.5); 0 only asks for any "
+                      "decrease, as Algorithm 2 of the paper does.");
+    prm.declare_entry("step bound fraction",
+                      "0.9",
+                      Patterns::Double(),
+                      "[-] The line search starts at this fraction of the "
+                      "largest step that keeps every det F > 0 (and, with "
+                      "contact, every distance > 0), in (0, 1).");
+    prm.declare_entry("maximum backtracks",
+                      "60",
+                      Patterns::Integer(1),
+                      "[-] Step halvings before the line search reports "
+                      "failure.");
+    prm.declare_entry("check invariants",
+                      "false",
+                      Patterns::Bool(),
+                      "[-] Verify det F > 0 for every element and particle "
+                      "at every accepted iterate and stop if not (slow; for "
+                      "tests).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("solver");
+    newton_tolerance          = prm.get_double("Newton tolerance");
+    maximum_newton_iterations = prm.get_integer("maximum Newton iterations");
+    linear_solver             = prm.get("linear solver");
+    cg_tolerance              = prm.get_double("CG tolerance");
+    armijo_constant           = prm.get_double("Armijo constant");
+    step_bound_fraction       = prm.get_double("step bound fraction");
+    maximum_backtracks        = prm.get_integer("maximum backtracks");
+    check_invariants          = prm.get_bool("check invariants");
+    prm.leave_subsection();
+
+    require_input(newton_tolerance > 0.,
+                  "solver",
+                  "Newton tolerance",
+                  to_input_string(newton_tolerance),
+                  "must be > 0 [m/s]");
+    require_input(cg_tolerance > 0. && cg_tolerance < 1.,
+                  "solver",
+                  "CG tolerance",
+                  to_input_string(cg_tolerance),
+                  "must lie in (0, 1)");
+    require_input(armijo_constant >= 0. && armijo_constant < 0.5,
+                  "solver",
+                  "Armijo constant",
+                  to_input_string(armijo_constant),
+                  "must lie in [0, 0.5)");
+    require_input(step_bound_fraction > 0. && step_bound_fraction < 1.,
+                  "solver",
+                  "step bound fraction",
+                  to_input_string(step_bound_fraction),
+                  "must lie in (0, 1): a step of the full bound would make "
+                  "some det F exactly 0");
+  }
+} // namespace bfemp
