@@ -114,32 +114,64 @@ namespace bfemp
   template <typename Function>
   void
   GridBoundaries<dim>::for_each_condition(const Lattice<dim> &lattice,
-                                          const std::size_t   node,
+                                          const Point<dim>   &x,
                                           const double        time,
                                           const Function     &f) const
   {
+    // A wall acts within 'wall layers' cells of its face. Measured in cells
+    // from the face, grid nodes sit at integers; the tolerance keeps the
+    // last layer of nodes inside despite round-off.
     const Tensor<1, dim> at_rest;
-    const auto           index = lattice.node_multi_index(node);
+    const double         tolerance = 1e-9;
     for (unsigned int d = 0; d < dim; ++d)
       {
+        const double   cells = (x[d] - lattice.origin[d]) * lattice.inverse_dx;
         Tensor<1, dim> inward;
-        if (wall_active[2 * d] && index[d] <= static_cast<int>(layers))
+        if (wall_active[2 * d] && cells <= layers + tolerance)
           inward[d] = 1.;
         else if (wall_active[2 * d + 1] &&
-                 index[d] >= static_cast<int>(lattice.n_cells[d] - layers))
+                 cells >= lattice.n_cells[d] - layers - tolerance)
           inward[d] = -1.;
         if (inward.norm_square() > 0.)
           f(wall_condition, inward, at_rest);
       }
-    if (!level_sets.empty())
-      {
-        const Point<dim> x = lattice.node_position(node);
-        for (const LevelSet<dim> &level_set : level_sets)
-          if (level_set.value(x, time) <= 0.)
-            f(level_set.condition(),
-              level_set.normal(x, time),
-              level_set.velocity());
-      }
+    for (const LevelSet<dim> &level_set : level_sets)
+      if (level_set.value(x, time) <= 0.)
+        f(level_set.condition(),
+          level_set.normal(x, time),
+          level_set.velocity());
+  }
+
+
+
+  template <int dim>
+  void
+  GridBoundaries<dim>::add_implicit_constraints(
+    const Lattice<dim>          &lattice,
+    const std::size_t            index,
+    const Point<dim>            &x,
+    const Tensor<1, dim>        &velocity,
+    const double                 time,
+    std::vector<NodeConstraint> &constraints) const
+  {
+    for_each_condition(
+      lattice,
+      x,
+      time,
+      [&](const BoundaryCondition &condition,
+          const Tensor<1, dim>    &normal,
+          const Tensor<1, dim>    &obstacle_velocity) {
+        using Type = BoundaryCondition::Type;
+        if (condition.type == Type::separable_slip &&
+            (velocity - obstacle_velocity) * normal >= 0.)
+          return;
+        const Tensor<2, dim> free_projector =
+          condition.type == Type::sticky
+            ? Tensor<2, dim>()
+            : Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+                outer_product(normal, normal);
+        constraints.push_back({index, free_projector, obstacle_velocity});
+      });
   }
 
 
@@ -154,7 +186,7 @@ namespace bfemp
     for (std::size_t node = 0; node < mass.size(); ++node)
       if (mass[node] > 0.)
         for_each_condition(lattice,
-                           node,
+                           lattice.node_position(node),
                            time,
                            [&](const BoundaryCondition &condition,
                                const Tensor<1, dim>    &normal,
@@ -178,24 +210,33 @@ namespace bfemp
     std::vector<NodeConstraint> constraints;
     for (std::size_t node = 0; node < mass.size(); ++node)
       if (mass[node] > 0.)
-        for_each_condition(
-          lattice,
-          node,
-          time,
-          [&](const BoundaryCondition &condition,
-              const Tensor<1, dim>    &normal,
-              const Tensor<1, dim>    &obstacle_velocity) {
-            using Type = BoundaryCondition::Type;
-            if (condition.type == Type::separable_slip &&
-                (velocity[node] - obstacle_velocity) * normal >= 0.)
-              return;
-            const Tensor<2, dim> free_projector =
-              condition.type == Type::sticky
-                ? Tensor<2, dim>()
-                : Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
-                    outer_product(normal, normal);
-            constraints.push_back({node, free_projector, obstacle_velocity});
-          });
+        add_implicit_constraints(lattice,
+                                 node,
+                                 lattice.node_position(node),
+                                 velocity[node],
+                                 time,
+                                 constraints);
+    return constraints;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename GridBoundaries<dim>::NodeConstraint>
+  GridBoundaries<dim>::implicit_constraints(
+    const Lattice<dim>                &lattice,
+    const std::vector<Point<dim>>     &positions,
+    const std::vector<Tensor<1, dim>> &velocity,
+    const double                       time) const
+  {
+    std::vector<NodeConstraint> constraints;
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      add_implicit_constraints(lattice,
+                               i,
+                               positions[i],
+                               velocity[i],
+                               time,
+                               constraints);
     return constraints;
   }
 

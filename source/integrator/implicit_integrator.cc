@@ -116,6 +116,25 @@ namespace bfemp
                 body.motion().velocity(X, end_time));
           }
       }
+    // Grid walls and level sets hold FEM nodes inside them as they hold
+    // grid nodes (prescribed nodes already are fully fixed).
+    for (unsigned int b = 0; b < fem_bodies.size(); ++b)
+      for (const auto &c :
+           boundaries.implicit_constraints(grid.lattice(),
+                                           fem_bodies[b]->positions(),
+                                           fem_bodies[b]->velocities(),
+                                           end_time))
+        {
+          const unsigned int node  = dofs.fem_node(b, c.node);
+          const unsigned int index = dofs.constraint_index(node);
+          if (index != DofSpace<dim>::invalid &&
+              dofs.constraints()[index].free_projector.norm_square() == 0.)
+            continue;
+          add(node,
+              c.free_projector,
+              dt * c.obstacle_velocity,
+              c.obstacle_velocity);
+        }
     if (with_mpm)
       for (const auto &c : boundaries.implicit_constraints(grid.lattice(),
                                                            state.mass,

@@ -2,6 +2,7 @@
 #include <bfemp/material/linear_elastic.h>
 #include <bfemp/material/material.h>
 #include <bfemp/material/neo_hookean.h>
+#include <bfemp/material/tangent_projection.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -24,6 +25,17 @@ namespace bfemp
   Material<dim>::Material(const ElasticModuli &moduli)
     : elastic_moduli(moduli)
   {}
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  Material<dim>::projected_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim> &F) const
+  {
+    return project_to_positive_semidefinite(
+      first_piola_kirchhoff_derivative(F));
+  }
 
 
 

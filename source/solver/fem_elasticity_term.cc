@@ -170,8 +170,8 @@ namespace bfemp
           for (unsigned int c = 0; c < dim; ++c)
             copy.dof_indices[dim * a + c] = dim * nodes[a] + c;
         const Tensor<2, dim> F = element.deformation_gradient(positions(*e, u));
-        copy.local = element.hessian(project_to_positive_semidefinite(
-          body.material().first_piola_kirchhoff_derivative(F)));
+        copy.local             = element.hessian(
+          body.material().projected_first_piola_kirchhoff_derivative(F));
         copy.local *= scale;
       },
       [&](const Copy &copy) { hessian.add(copy.dof_indices, copy.local); },

@@ -173,9 +173,9 @@ namespace bfemp
     using Values       = std::array<double, max_nodes * dim>;
     particles.for_each_scattering([&](const auto &particle) {
       const ParticleStencil<dim, degree> s(grid.lattice(), dofs, particle);
-      const Tensor<4, dim>               A = project_to_positive_semidefinite(
-        materials[s.material]->first_piola_kirchhoff_derivative(
-          s.deformation_gradient(u)));
+      const Tensor<4, dim>               A =
+        materials[s.material]->projected_first_piola_kirchhoff_derivative(
+          s.deformation_gradient(u));
       const double weight = scale * s.volume;
 
       // A_k[a][b][d] = sum_j A[a][j][b][d] g^_k[j]: the first contraction,

@@ -66,6 +66,18 @@ namespace bfemp
                          const std::vector<Tensor<1, dim>> &velocity,
                          const double                       time) const;
 
+    /**
+     * The same conditions for arbitrary points, e.g. FEM nodes at their
+     * start-of-step positions: a point inside a wall's layers or a level
+     * set is constrained like a grid node there. NodeConstraint::node is
+     * the index into @p positions.
+     */
+    std::vector<NodeConstraint>
+    implicit_constraints(const Lattice<dim>                &lattice,
+                         const std::vector<Point<dim>>     &positions,
+                         const std::vector<Tensor<1, dim>> &velocity,
+                         const double                       time) const;
+
     /** True if any wall or level set is set. */
     bool
     any() const;
@@ -73,14 +85,23 @@ namespace bfemp
   private:
     /**
      * f(condition, outward normal, obstacle velocity) for every wall and
-     * level set that contains lattice node @p node at @p time.
+     * level set that contains the point @p x at @p time.
      */
     template <typename Function>
     void
     for_each_condition(const Lattice<dim> &lattice,
-                       const std::size_t   node,
+                       const Point<dim>   &x,
                        const double        time,
                        const Function     &f) const;
+
+    /** Appends the implicit constraints at point @p x, tagged @p index. */
+    void
+    add_implicit_constraints(const Lattice<dim>          &lattice,
+                             const std::size_t            index,
+                             const Point<dim>            &x,
+                             const Tensor<1, dim>        &velocity,
+                             const double                 time,
+                             std::vector<NodeConstraint> &constraints) const;
 
     /** wall_active[2 d] is the lower face of direction d, [2 d + 1] upper. */
     std::array<bool, 2 * dim>  wall_active{};

@@ -54,6 +54,15 @@ namespace bfemp
     virtual Tensor<4, dim>
     first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const = 0;
 
+    /**
+     * The positive semi-definite projection of dP/dF at F (projected
+     * Newton, BFEMP Section 5): the nearest PSD tensor in the Frobenius
+     * norm. The default eigen-decomposes dP/dF numerically
+     * (TangentProjection); materials with a known eigen-system override it.
+     */
+    virtual Tensor<4, dim>
+    projected_first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const;
+
     /** Name used in messages and output. */
     virtual std::string
     name() const = 0;
