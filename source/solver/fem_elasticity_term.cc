@@ -114,6 +114,18 @@ namespace bfemp
 
 
   template <int dim>
+  double
+  FemElasticityTerm<dim>::magnitude() const
+  {
+    double size = 0.;
+    for (const auto &body : bodies)
+      size += body->mesh().total_volume() * body->material().energy_scale();
+    return scale * size;
+  }
+
+
+
+  template <int dim>
   void
   FemElasticityTerm<dim>::add_gradient(const Vector<double> &u,
                                        Vector<double>       &gradient) const

@@ -49,6 +49,18 @@ namespace bfemp
 
 
   template <int dim>
+  double
+  IncrementalPotential<dim>::round_off() const
+  {
+    double magnitude = 0.;
+    for (const EnergyTerm<dim> *term : terms)
+      magnitude += term->magnitude();
+    return 64. * std::numeric_limits<double>::epsilon() * magnitude;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   IncrementalPotential<dim>::term_values(const Vector<double> &u) const
   {

@@ -10,6 +10,10 @@ namespace bfemp
   {
     mass   = node_mass;
     target = predictor;
+    size   = 0.;
+    for (unsigned int i = 0; i < mass.size(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        size += 0.5 * mass[i] * target[dim * i + c] * target[dim * i + c];
   }
 
 
@@ -46,6 +50,15 @@ namespace bfemp
         }
       return 0.5 * mass[i] * norm_square;
     });
+  }
+
+
+
+  template <int dim>
+  double
+  InertiaTerm<dim>::magnitude() const
+  {
+    return size;
   }
 
 

@@ -137,6 +137,21 @@ namespace bfemp
 
 
   template <int dim>
+  double
+  MpmElasticityTerm<dim>::magnitude() const
+  {
+    using Layout = ParticleLayout<dim>;
+    return scale * particles.template sum<double>([&](const auto &particle) {
+      const auto p = particle.get_properties();
+      return p[Layout::rest_volume] *
+             materials[static_cast<unsigned int>(p[Layout::material_id])]
+               ->energy_scale();
+    });
+  }
+
+
+
+  template <int dim>
   template <int degree>
   void
   MpmElasticityTerm<dim>::add_gradient(const Vector<double> &u,

@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/solver/cg_amg_solver.h>
 #include <bfemp/solver/newton_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -24,6 +25,25 @@ namespace bfemp
     line_search_time += other.line_search_time;
     return *this;
   }
+
+
+
+  namespace
+  {
+    /**
+     * The rigid translations of the unified DoF space (component c of every
+     * node), the near-null space that lets AMG coarsen a vector problem
+     * without mixing components.
+     */
+    std::vector<std::vector<bool>>
+    translation_modes_of(const unsigned int dim, const std::size_t n_dofs)
+    {
+      std::vector<std::vector<bool>> modes(dim, std::vector<bool>(n_dofs));
+      for (std::size_t i = 0; i < n_dofs; ++i)
+        modes[i % dim][i] = true;
+      return modes;
+    }
+  } // namespace
 
 
 
@@ -67,22 +87,32 @@ namespace bfemp
         ++statistics.bound_hits;
       }
     // Near the minimizer the decrease t |g.p| falls below the round-off of
-    // E itself, and comparing energies decides nothing. There a trial point
-    // is accepted if E did not grow beyond round-off; the Newton residual,
-    // not the energy, then ends the iteration.
-    const double round_off =
-      64. * std::numeric_limits<double>::epsilon() * std::abs(energy);
-    const bool unresolved = std::abs(slope) <= round_off;
+    // E, and comparing energies decides nothing. There the change of E is
+    // measured by the trapezoidal rule on the directional derivative,
+    // t/2 (g(u).p + g(u + t p).p), exact for a quadratic and free of the
+    // cancellation in E; the trial point must also not raise E beyond its
+    // round-off.
+    const double   round_off = potential.round_off();
+    Vector<double> trial_gradient;
     for (unsigned int k = 0; k <= parameters.maximum_backtracks; ++k)
       {
         trial = u;
         trial.add(step, p);
         trial_energy = potential.value(trial);
-        if (std::isfinite(trial_energy) &&
-            (trial_energy <=
-               energy + parameters.armijo_constant * step * slope ||
-             (unresolved && trial_energy <= energy + round_off)))
-          return step;
+        if (std::isfinite(trial_energy))
+          {
+            if (trial_energy <=
+                energy + parameters.armijo_constant * step * slope)
+              return step;
+            if (step * std::abs(slope) <= round_off &&
+                trial_energy <= energy + round_off)
+              {
+                potential.gradient(trial, trial_gradient);
+                const double change = 0.5 * step * (slope + trial_gradient * p);
+                if (change <= parameters.armijo_constant * step * slope)
+                  return step;
+              }
+          }
         step *= 0.5;
         ++statistics.backtracks;
       }
@@ -132,6 +162,9 @@ namespace bfemp
         statistics.assembly_time += timer.wall_time();
 
         timer.restart();
+        if (auto *cg = dynamic_cast<CgAmgSolver *>(solver.get());
+            cg != nullptr && statistics.iterations == 1)
+          cg->set_constant_modes(translation_modes_of(dim, u.size()));
         solver->factorize(hessian);
         statistics.factorization_time += timer.wall_time();
 

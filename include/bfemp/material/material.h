@@ -63,6 +63,16 @@ namespace bfemp
     virtual Tensor<4, dim>
     projected_first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const;
 
+    /**
+     * dim (2 mu + |lambda|) [Pa]: the size of the terms an energy density
+     * near F = I is the small difference of, for round-off estimates.
+     */
+    double
+    energy_scale() const
+    {
+      return dim * (2. * elastic_moduli.mu + std::abs(elastic_moduli.lambda));
+    }
+
     /** Name used in messages and output. */
     virtual std::string
     name() const = 0;

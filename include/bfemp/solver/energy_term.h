@@ -57,6 +57,19 @@ namespace bfemp
       return std::numeric_limits<double>::infinity();
     }
 
+    /**
+     * The size of the floating-point terms that value() adds up, so that
+     * eps * magnitude() bounds its round-off. Elastic energies near rest
+     * are small differences of large terms (psi = mu/2 (|F|^2 - dim) - ...),
+     * and their round-off, not eps |E|, limits how small an energy change
+     * the line search can see.
+     */
+    virtual double
+    magnitude() const
+    {
+      return 0.;
+    }
+
     /** Smallest det F of the term at u (+inf if it has none). */
     virtual double
     minimum_determinant(const Vector<double> &) const

@@ -36,6 +36,9 @@ namespace bfemp
     double
     value(const Vector<double> &u) const override;
 
+    double
+    magnitude() const override;
+
     void
     add_gradient(const Vector<double> &u,
                  Vector<double>       &gradient) const override;

@@ -40,6 +40,10 @@ namespace bfemp
     double
     value(const Vector<double> &u) const;
 
+    /** A bound of the round-off of value(): 64 eps sum of magnitudes. */
+    double
+    round_off() const;
+
     /** Each term's value at u, in the order of set_terms(). */
     std::vector<double>
     term_values(const Vector<double> &u) const;

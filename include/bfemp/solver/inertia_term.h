@@ -32,6 +32,9 @@ namespace bfemp
     double
     value(const Vector<double> &u) const override;
 
+    double
+    magnitude() const override;
+
     void
     add_gradient(const Vector<double> &u,
                  Vector<double>       &gradient) const override;
@@ -43,6 +46,7 @@ namespace bfemp
   private:
     std::vector<double> mass;
     Vector<double>      target;
+    double              size = 0.;
   };
 } // namespace bfemp
 
