@@ -158,7 +158,18 @@ namespace bfemp
             const Tensor<2, dim> P_j  = projector_of(j);
             const Tensor<2, dim> H_ij = block(i, j);
             if (j == i)
-              set_block(i, i, P_i * H_ij * P_i + identity - P_i);
+              {
+                // The constrained directions get the node's mean diagonal
+                // stiffness rather than 1, which keeps the matrix's
+                // conditioning (and CG's iteration count) that of the free
+                // problem.
+                const double stiffness =
+                  std::max(trace(H_ij) / dim,
+                           std::numeric_limits<double>::min());
+                set_block(i,
+                          i,
+                          P_i * H_ij * P_i + stiffness * (identity - P_i));
+              }
             else
               {
                 set_block(i, j, P_i * H_ij * P_j);

@@ -171,6 +171,9 @@ namespace bfemp
         timer.restart();
         gradient *= -1.;
         solver->solve(gradient, direction);
+        // P H P + (I - P) keeps p = P p only up to round-off of the size of
+        // H; projecting again keeps slanted slip constraints exact.
+        potential.dof_space().project(direction);
         statistics.solve_time += timer.wall_time();
         if (!std::isfinite(direction.linfty_norm()))
           fail("the linear solver returned a non-finite Newton direction");

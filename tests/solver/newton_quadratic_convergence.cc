@@ -1,0 +1,226 @@
+// Quadratic convergence of Newton's method on the incremental potential of
+// a static FEM problem (BFEMP Section 5 without inertia, dt = 1): a
+// neo-Hookean bar (L = 1 m) clamped at x = 0 (node constraints P = 0) and
+// loaded by dead-load tractions, E(u) = Psi(u) - f.u, in 2D (plane strain)
+// and 3D: the end face x = L is pulled along the bar (0.1 E) with a small
+// transverse part (0.001 E), the lateral faces outwards (0.05 E). The bar
+// stretches by about 8 % and bends slightly, so the problem is
+// geometrically and materially nonlinear, but every element is stretched in
+// all directions: the tangents stay PSD near the solution, the PSD
+// projection does nothing there (checked), and projected Newton is plain
+// Newton. (Under uniaxial tension alone the lateral contraction makes the
+// 3D neo-Hookean tangent indefinite in the lateral twist mode; the
+// projection then limits Newton to linear convergence, rate ~1e-2.)
+//
+// A test-local loop takes full Newton steps p = -H^-1 g (CHOLMOD) from
+// u = 0 and records r_k = ||p_k||_inf; quadratic convergence means
+// r_{k+1} / r_k^2 stays bounded while r_{k+1} / r_k -> 0, checked on the
+// ratios whose r_{k+1} lies well above the round-off floor of ||p||
+// (measured as the Newton step at the converged u). The library's
+// NewtonSolver (with its line search and det F > 0 filter) must reach the
+// same minimizer. The ratios depend on round-off in their last digits and
+// go to stdout; the output holds counts and checks.
+
+#include <bfemp/base/input_error.h>
+#include <bfemp/solver/cholmod_solver.h>
+#include <bfemp/solver/newton_solver.h>
+#include <bfemp/solver/solver_parameters.h>
+
+#include <iostream>
+
+#include "solver_test_scene.h"
+
+using namespace dealii;
+using namespace bfemp;
+using bfemp_tests::check;
+
+namespace
+{
+  const double youngs_modulus = 1e6;
+  const double poisson_ratio  = 0.3;
+  const double length         = 1.;
+
+  /** Elements whose tangent the PSD projection changes at u. */
+  template <int dim>
+  unsigned int
+  projected_elements(const bfemp_tests::FemScene<dim> &scene,
+                     const Vector<double>             &u)
+  {
+    const FemBody<dim> &body = *scene.bodies[0];
+    unsigned int        n    = 0;
+    for (unsigned int e = 0; e < body.elements().size(); ++e)
+      {
+        typename SimplexElement<dim>::NodePositions x;
+        for (unsigned int a = 0; a <= dim; ++a)
+          {
+            const unsigned int node = body.element_nodes()[e][a];
+            x[a] = body.positions()[node] + DofSpace<dim>::get(u, node);
+          }
+        const Tensor<2, dim> F = body.elements()[e].deformation_gradient(x);
+        const Tensor<4, dim> C =
+          body.material().first_piola_kirchhoff_derivative(F);
+        if ((body.material().projected_first_piola_kirchhoff_derivative(F) - C)
+              .norm() > 1e-12 * C.norm())
+          ++n;
+      }
+    return n;
+  }
+
+  template <int dim>
+  void
+  run(const double width,
+      const double edge,
+      const double axial,
+      const double lateral,
+      const double transverse)
+  {
+    const std::string what = std::to_string(dim) + "D bar: ";
+    Point<dim>        upper;
+    upper[0] = length;
+    for (unsigned int d = 1; d < dim; ++d)
+      upper[d] = width;
+    bfemp_tests::FemScene<dim> scene(
+      {bfemp_tests::box_body_parameters<dim>(Point<dim>(),
+                                             upper,
+                                             edge,
+                                             "neo-Hookean",
+                                             youngs_modulus,
+                                             poisson_ratio,
+                                             1000.)});
+    const unsigned int n_clamped = scene.clamp(0);
+
+    // Dead load: tractions pulling the end face x = L (boundary id 1)
+    // along the bar with a small transverse part, and every lateral face
+    // (ids 2 .. 2 dim - 1) outwards, so that each element is stretched in
+    // all directions (with uniaxial tension alone, the lateral contraction
+    // makes the 3D neo-Hookean tangent indefinite in the lateral twist
+    // mode, the projection becomes active and convergence only linear).
+    bfemp_tests::DeadLoadTerm<dim> load(scene.dofs.n_dofs());
+    Tensor<1, dim>                 end_traction;
+    end_traction[0] = axial * youngs_modulus;
+    end_traction[1] = transverse * youngs_modulus;
+    bfemp_tests::add_traction(scene, load, 1, end_traction);
+    for (unsigned int d = 1; d < dim; ++d)
+      for (const unsigned int side : {0u, 1u})
+        {
+          Tensor<1, dim> t;
+          t[d] = (side == 0 ? -1. : 1.) * lateral * youngs_modulus;
+          bfemp_tests::add_traction(scene, load, 2 * d + side, t);
+        }
+    const unsigned int n_loaded = [&]() {
+      unsigned int n = 0;
+      for (unsigned int node = 0; node < scene.dofs.n_nodes(); ++node)
+        if (DofSpace<dim>::get(load.forces(), node).norm() > 0.)
+          ++n;
+      return n;
+    }();
+
+    scene.elasticity.set_scale(1.);
+    scene.potential.set_terms({&scene.elasticity, &load});
+    scene.potential.setup_system();
+    deallog << what << scene.bodies[0]->elements().size() << " elements, "
+            << scene.dofs.n_dofs() << " DoFs, " << n_clamped
+            << " clamped nodes, " << n_loaded << " loaded nodes" << std::endl;
+
+    // Test-local full Newton from u = 0.
+    const double                     tolerance = 1e-12;
+    Vector<double>                   u(scene.dofs.n_dofs());
+    CholmodSolver                    cholmod;
+    const bfemp_tests::NewtonHistory history =
+      bfemp_tests::full_newton(scene.potential, cholmod, u, tolerance, 20);
+    const std::vector<double> &r = history.residuals;
+
+    std::cout << what << "residuals";
+    for (const double r_k : r)
+      std::cout << ' ' << r_k;
+    std::cout << std::endl;
+    // Ratios are meaningful while r_{k+1} is well above round-off: measure
+    // the round-off floor of ||p||_inf as the Newton step at the converged
+    // u (one more solve), and use ratios with r_{k+1} > 100 floor.
+    double floor = 0.;
+    {
+      Vector<double> g, p;
+      scene.potential.gradient(u, g);
+      cholmod.factorize(scene.potential.hessian(u));
+      g *= -1.;
+      cholmod.solve(g, p);
+      floor = p.linfty_norm();
+    }
+    const double noise = 100. * floor;
+    std::cout << what << "round-off floor of ||p||_inf " << floor << std::endl;
+    double       max_quadratic_ratio = 0., last_linear_ratio = 1.;
+    unsigned int n_ratios = 0;
+    for (unsigned int k = 1; k + 1 < r.size(); ++k)
+      {
+        const double quadratic = r[k + 1] / (r[k] * r[k]);
+        const double linear    = r[k + 1] / r[k];
+        std::cout << what << "k = " << k << ": r_k+1 / r_k^2 = " << quadratic
+                  << " 1/m, r_k+1 / r_k = " << linear
+                  << (r[k + 1] > noise ? "" : " (round-off)") << std::endl;
+        if (r[k + 1] > noise)
+          {
+            max_quadratic_ratio = std::max(max_quadratic_ratio, quadratic);
+            last_linear_ratio   = linear;
+            ++n_ratios;
+          }
+      }
+
+    deallog << what << "full Newton: " << r.size() << " iterations"
+            << std::endl;
+    check(history.converged,
+          what + "full Newton converges to ||p||_inf < 1e-12 m");
+    check(r.size() >= 4 && r.size() <= 6,
+          what + "the load needs 4 to 6 Newton iterations");
+    check(history.minimum_determinant > 0.,
+          what + "every iterate has det F > 0");
+    check(projected_elements(scene, u) == 0,
+          what + "no tangent is projected at the solution");
+    check(n_ratios >= 2, what + "at least 2 ratios above round-off");
+    // Quadratic: r_{k+1} <= C r_k^2 with C of order 1 / width, where linear
+    // convergence with rate q would give q / r_k, growing without bound.
+    check(max_quadratic_ratio < 100. / length,
+          what + "r_k+1 / r_k^2 < 100 / L (quadratic convergence)");
+    check(last_linear_ratio < 1e-3, what + "r_k+1 / r_k -> 0 (< 1e-3)");
+
+    // The minimizer: gradient zero on the free DoFs.
+    Vector<double> g;
+    scene.potential.gradient(u, g);
+    check(g.linfty_norm() < 1e-9 * load.forces().linfty_norm(),
+          what + "||P grad E|| < 1e-9 ||f|| at the end");
+
+    // The library's projected Newton with line search and filtering.
+    SolverParameters parameters;
+    parameters.newton_tolerance = tolerance;
+    parameters.linear_solver    = "CHOLMOD";
+    parameters.check_invariants = true;
+    NewtonSolver<dim>      newton(parameters);
+    Vector<double>         u_solver(scene.dofs.n_dofs());
+    const NewtonStatistics statistics =
+      newton.minimize(scene.potential, u_solver, 1., "static bar");
+    Vector<double> difference(u_solver);
+    difference -= u;
+    std::cout << what << "NewtonSolver: " << statistics.iterations
+              << " iterations, " << statistics.backtracks << " backtracks, "
+              << statistics.bound_hits << " bound hits, |u - u_full| "
+              << difference.linfty_norm() << ", tip displacement "
+              << u.linfty_norm() << " m" << std::endl;
+    deallog << what << "NewtonSolver: " << statistics.iterations
+            << " iterations" << std::endl;
+    check(statistics.residual < tolerance, what + "NewtonSolver converges");
+    check(difference.linfty_norm() < 1e-10 * u.linfty_norm(),
+          what + "NewtonSolver finds the same minimizer");
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bfemp_tests::initlog();
+
+  // Tractions in units of E: axial 0.1, lateral 0.05, transverse 0.001.
+  run<2>(0.2, 0.05, 0.1, 0.05, 0.001);
+  run<3>(0.25, 0.125, 0.1, 0.05, 0.001);
+}
