@@ -1,4 +1,5 @@
 #include <bfemp/material/fixed_corotated.h>
+#include <bfemp/material/singular_value_decomposition.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -184,6 +185,51 @@ namespace bfemp
                 dP[i][j] - lambda * (J - 1.) / J * C[i][l] * C[k][j];
         }
     return dP_dF;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  FixedCorotated<dim>::projected_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim> &F) const
+  {
+    const SingularValueDecomposition<dim> svd =
+      signed_singular_value_decomposition(F);
+    const Tensor<1, dim> &sigma = svd.sigma;
+
+    const double mu     = this->elastic_moduli.mu;
+    const double lambda = this->elastic_moduli.lambda;
+    // J_i = prod_{k != i} sigma_k and J_ij = prod_{k != i, j} sigma_k,
+    // formed without dividing by a possibly vanishing sigma_i.
+    double J = 1.;
+    double J_i[dim];
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        J *= sigma[i];
+        J_i[i] = 1.;
+        for (unsigned int k = 0; k < dim; ++k)
+          if (k != i)
+            J_i[i] *= sigma[k];
+      }
+
+    SymmetricTensor<2, dim> hessian, twist, flip;
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        hessian[i][i] = 2. * mu + lambda * J_i[i] * J_i[i];
+        for (unsigned int j = i + 1; j < dim; ++j)
+          {
+            double J_ij = 1.;
+            for (unsigned int k = 0; k < dim; ++k)
+              if (k != i && k != j)
+                J_ij *= sigma[k];
+            const double c = lambda * (J - 1.) * J_ij;
+            hessian[i][j]  = lambda * J_i[i] * J_i[j] + c;
+            twist[i][j]    = 2. * mu + c - 4. * mu / (sigma[i] + sigma[j]);
+            flip[i][j]     = 2. * mu - c;
+          }
+      }
+    return project_isotropic_tangent(svd, hessian, twist, flip);
   }
 
 

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <algorithm>
+
 namespace bfemp
 {
   namespace
@@ -27,6 +29,27 @@ namespace bfemp
             tangent[i][j][k][l] =
               moduli.mu * ((i == k && j == l) + (i == l && j == k)) +
               moduli.lambda * (i == j && k == l);
+
+    // Spectral decomposition of the class documentation: the tangent is
+    // 2 mu sym + dim lambda vec(I) vec(I)^T / dim with sym = (I + T) / 2,
+    // i.e. 2 mu on sym - spherical and 2 mu + dim lambda on spherical.
+    const double shear_eigenvalue = 2. * moduli.mu;
+    const double bulk_eigenvalue  = 2. * moduli.mu + dim * moduli.lambda;
+    if (shear_eigenvalue >= 0. && bulk_eigenvalue >= 0.)
+      projected_tangent = tangent;
+    else
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              {
+                const double sym =
+                  0.5 * ((i == k && j == l) + (i == l && j == k));
+                const double spherical = (i == j && k == l) / double(dim);
+                projected_tangent[i][j][k][l] =
+                  std::max(shear_eigenvalue, 0.) * (sym - spherical) +
+                  std::max(bulk_eigenvalue, 0.) * spherical;
+              }
   }
 
 
@@ -60,6 +83,16 @@ namespace bfemp
     const Tensor<2, dim> &) const
   {
     return tangent;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  LinearElastic<dim>::projected_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim> &) const
+  {
+    return projected_tangent;
   }
 
 

@@ -1,4 +1,5 @@
 #include <bfemp/material/neo_hookean.h>
+#include <bfemp/material/singular_value_decomposition.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -69,6 +70,43 @@ namespace bfemp
             dP_dF[i][j][k][l] +=
               c * F_inv_T[i][l] * F_inv_T[k][j] + (i == k && j == l ? mu : 0.);
     return dP_dF;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  NeoHookean<dim>::projected_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim> &F) const
+  {
+    const SingularValueDecomposition<dim> svd =
+      signed_singular_value_decomposition(F);
+    const Tensor<1, dim> &sigma = svd.sigma;
+    Assert(sigma[dim - 1] > 0.,
+           ExcMessage("neo-Hookean tangent requires det F > 0"));
+
+    const double mu     = this->elastic_moduli.mu;
+    const double lambda = this->elastic_moduli.lambda;
+    // A product of the singular values keeps full relative accuracy (no
+    // cancellation), so ln J stays accurate for J -> 0.
+    double J = 1.;
+    for (unsigned int i = 0; i < dim; ++i)
+      J *= sigma[i];
+    const double c = lambda * std::log(J) - mu;
+
+    SymmetricTensor<2, dim> hessian, twist, flip;
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        hessian[i][i] = mu + (lambda - c) / (sigma[i] * sigma[i]);
+        for (unsigned int j = i + 1; j < dim; ++j)
+          {
+            const double inverse_product = 1. / (sigma[i] * sigma[j]);
+            hessian[i][j]                = lambda * inverse_product;
+            twist[i][j]                  = mu + c * inverse_product;
+            flip[i][j]                   = mu - c * inverse_product;
+          }
+      }
+    return project_isotropic_tangent(svd, hessian, twist, flip);
   }
 
 

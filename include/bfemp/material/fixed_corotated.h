@@ -47,6 +47,41 @@ namespace bfemp
     Tensor<4, dim>
     first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const override;
 
+    /**
+     * The PSD projection of dP/dF from the analytic eigen-system (see
+     * project_isotropic_tangent()). In the signed singular values (R = U
+     * V^T is the rotation of the class documentation, so inversion only
+     * flips the sign of the smallest sigma_i) the energy is
+     * @f[
+     *   \Psi = \mu \sum_i (\sigma_i - 1)^2 + \frac{\lambda}{2} (J - 1)^2,
+     *   \qquad J = \prod_i \sigma_i, \qquad
+     *   \Psi_i = 2 \mu (\sigma_i - 1) + \lambda (J - 1) J_i,
+     * @f]
+     * with J_i = prod_{k != i} sigma_k, so that
+     * @f[
+     *   \frac{\partial^2 \Psi}{\partial \sigma_i^2} = 2 \mu + \lambda J_i^2,
+     *   \qquad
+     *   \frac{\partial^2 \Psi}{\partial \sigma_i \partial \sigma_j}
+     *     = \lambda \left(J_i J_j + (J - 1) J_{ij}\right) \ (i \ne j),
+     * @f]
+     * with J_ij = prod_{k != i, j} sigma_k (1 in 2D). Since J_i - J_j =
+     * (sigma_j - sigma_i) J_ij and J_i + J_j = (sigma_i + sigma_j) J_ij, the
+     * twist and flip eigenvalues of the pair i < j are
+     * @f[
+     *   \frac{\Psi_i + \Psi_j}{\sigma_i + \sigma_j}
+     *     = 2 \mu + \lambda (J - 1) J_{ij}
+     *       - \frac{4 \mu}{\sigma_i + \sigma_j}, \qquad
+     *   \frac{\Psi_i - \Psi_j}{\sigma_i - \sigma_j}
+     *     = 2 \mu - \lambda (J - 1) J_{ij},
+     * @f]
+     * exact for repeated singular values. The twist eigenvalue is singular
+     * where sigma_i + sigma_j = 0, the set (inverted F only) on which R,
+     * and so the tangent itself, is not differentiable.
+     */
+    Tensor<4, dim>
+    projected_first_piola_kirchhoff_derivative(
+      const Tensor<2, dim> &F) const override;
+
     /** "fixed corotated". */
     std::string
     name() const override;
