@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 mode="${1:-build}"
 
-packages=(libdeal.ii-dev libsuitesparse-dev gmsh cmake g++ make ccache numdiff perl
+packages=(libdeal.ii-dev libsuitesparse-dev libopenblas0-pthread gmsh cmake g++ make
+          ccache numdiff perl
           python3-vtk9 python3-numpy python3-matplotlib)
 missing=()
 for package in "${packages[@]}"; do
