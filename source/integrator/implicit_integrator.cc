@@ -1,5 +1,6 @@
 #include <bfemp/integrator/implicit_integrator.h>
 
+#include <algorithm>
 #include <string>
 
 namespace bfemp
@@ -45,9 +46,22 @@ namespace bfemp
   {
     state.reinit(grid.lattice().n_nodes);
     transfer.particles_to_grid(particles, state, false);
+    // A particle at the very edge of a node's kernel support gives it a
+    // mass like 1e-40 kg. As an unknown such a node has a Hessian of that
+    // size, its Newton increment is round-off, and ||p||_inf never falls
+    // below the tolerance. Its kernel weight and gradient are negligible,
+    // so it is left out of the step, as a node without mass.
+    const double max_mass =
+      *std::max_element(state.mass.begin(), state.mass.end());
+    const double negligible_mass = 1e-12 * max_mass;
     for (std::size_t i = 0; i < state.mass.size(); ++i)
-      if (state.mass[i] > 0.)
+      if (state.mass[i] > negligible_mass)
         state.velocity[i] /= state.mass[i];
+      else
+        {
+          state.mass[i]     = 0.;
+          state.velocity[i] = 0.;
+        }
   }
 
 

@@ -135,8 +135,11 @@ namespace bfemp
     if (!std::isfinite(energy))
       throw SimulationError(step_label +
                             ": the incremental potential is not finite at "
-                            "the initial guess (an inverted element or "
-                            "particle, or a NaN in the state)");
+                            "the initial guess: an element or particle is "
+                            "inverted (or the state holds a NaN). If nodes "
+                            "have a prescribed motion, their displacement in "
+                            "one step may exceed the size of the elements "
+                            "next to them; reduce the time step.");
 
     auto fail = [&](const std::string &what) {
       std::ostringstream message;
