@@ -9,10 +9,11 @@
 // so the total momentum is conserved to round-off, not just to the Newton
 // tolerance: checked |p(t) - p(0)| < 1e-9 |p(0)| at every step (the csv
 // resolves 1e-12). The collision happened: each disk's x and y momentum
-// changed sign. (Not dt = 5e-3: then the regularly sampled particles sit
-// exactly on the edge of their kernel support after 5 steps, grid nodes of
-// mass ~1e-58 kg become unknowns, and Newton cannot reach its tolerance on
-// them.)
+// changed sign. (At dt = 5e-3 the regularly sampled particles sit exactly
+// on the edge of their kernel support after 5 steps and give grid nodes
+// masses of ~1e-58 kg; Newton stalled on them until such nodes were left out
+// of the implicit step. dt = 4e-3 was kept; the FEM predictions below are
+// for it.)
 //
 // FEM: a square (side 0.2, 128 triangles, E = 1e6 Pa) spins at w = 10 rad/s
 // about its centre and translates at (0.3, 0.1) m/s (velocities set through
