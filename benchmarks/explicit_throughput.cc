@@ -56,6 +56,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "machine_info.h"
+
 #ifndef BFEMP_SOURCE_DIR
 #  define BFEMP_SOURCE_DIR "."
 #endif
@@ -64,6 +66,7 @@ namespace
 {
   using namespace dealii;
   using Clock = std::chrono::steady_clock;
+  using namespace machine_info;
 
   // ------------------------------------------------------------------------
   // Scene constants, shared by bfemp and the hand-written loop.
@@ -99,86 +102,6 @@ namespace
     // thread and stop (no loop, no JSON), for perf / callgrind.
     unsigned int profile_steps = 0;
   };
-
-  double
-  seconds_since(const Clock::time_point start)
-  {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-  }
-
-  std::string
-  run_command(const std::string &command)
-  {
-    std::string result;
-    if (FILE *pipe = popen(command.c_str(), "r"))
-      {
-        char buffer[256];
-        while (fgets(buffer, sizeof(buffer), pipe))
-          result += buffer;
-        pclose(pipe);
-      }
-    while (!result.empty() && (result.back() == '\n' || result.back() == ' '))
-      result.pop_back();
-    return result;
-  }
-
-  std::string
-  cpu_model()
-  {
-    std::ifstream in("/proc/cpuinfo");
-    std::string   line;
-    while (std::getline(in, line))
-      if (line.rfind("model name", 0) == 0)
-        {
-          const auto  colon = line.find(':');
-          std::string name  = line.substr(colon + 1);
-          name.erase(0, name.find_first_not_of(' '));
-          return name;
-        }
-    return "unknown";
-  }
-
-  /** "release" (NDEBUG, deal.II's optimized library) or "debug". */
-  std::string
-  build_type()
-  {
-#ifdef NDEBUG
-    return "release";
-#else
-    return "debug";
-#endif
-  }
-
-  double
-  process_cpu_seconds()
-  {
-    timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-  }
-
-  double
-  load_average()
-  {
-    std::ifstream in("/proc/loadavg");
-    double        load = -1.;
-    in >> load;
-    return load;
-  }
-
-  std::string
-  json_string(const std::string &s)
-  {
-    std::string out = "\"";
-    for (const char c : s)
-      if (c == '"' || c == '\\')
-        out += std::string("\\") + c;
-      else if (c == '\n')
-        out += "\\n";
-      else
-        out += c;
-    return out + "\"";
-  }
 
   // ------------------------------------------------------------------------
   // Initial velocity: a Taylor-Green vortex on the block [lo, lo + L]^dim.
@@ -1073,30 +996,6 @@ namespace
               << " %; end state: min det F = " << state.first
               << (state.second ? ", finite" : ", NOT FINITE") << std::endl;
     return entries;
-  }
-
-  struct GitState
-  {
-    std::string commit, modified;
-  };
-
-  /**
-   * The commit of the source tree and its library files (include/, source/)
-   * changed since, read when the run starts. Read-only: rev-parse, and status
-   * with --no-optional-locks so that it does not touch the index.
-   */
-  GitState
-  read_git_state()
-  {
-    const std::string source = BFEMP_SOURCE_DIR;
-    GitState          state;
-    state.commit =
-      run_command("git -C '" + source + "' rev-parse HEAD 2>/dev/null");
-    state.modified = run_command(
-      "git -C '" + source +
-      "' --no-optional-locks status --porcelain --untracked-files=no -- "
-      "include source 2>/dev/null | cut -c4- | tr '\\n' ' '");
-    return state;
   }
 
   void
