@@ -176,6 +176,20 @@ namespace bfemp
 
 
 
+  template <int dim>
+  double
+  StepDiagnostics<dim>::measure_max_speed(
+    const std::vector<std::unique_ptr<FemBody<dim>>> &bodies)
+  {
+    double max_speed = 0.;
+    for (const auto &body : bodies)
+      for (const Tensor<1, dim> &v : body->velocities())
+        max_speed = std::max(max_speed, v.norm());
+    return max_speed;
+  }
+
+
+
   template struct StepDiagnostics<2>;
   template struct StepDiagnostics<3>;
 } // namespace bfemp

@@ -406,11 +406,7 @@ namespace bfemp
           // of the last diagnosed step.
           state.max_speed =
             std::max(StepDiagnostics<dim>::measure_max_speed(particle_system),
-                     fem_body_list.empty()
-                       ? 0.
-                       : StepDiagnostics<dim>::measure(fem_body_list,
-                                                       parameters.gravity)
-                           .max_speed);
+                     StepDiagnostics<dim>::measure_max_speed(fem_body_list));
         if (snapshot_due)
           {
             write_snapshot(time);

@@ -1,5 +1,4 @@
 #include <bfemp/base/input_error.h>
-#include <bfemp/solver/cg_amg_solver.h>
 #include <bfemp/solver/newton_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -165,9 +164,8 @@ namespace bfemp
         statistics.assembly_time += timer.wall_time();
 
         timer.restart();
-        if (auto *cg = dynamic_cast<CgAmgSolver *>(solver.get());
-            cg != nullptr && statistics.iterations == 1)
-          cg->set_constant_modes(translation_modes_of(dim, u.size()));
+        if (statistics.iterations == 1)
+          solver->set_constant_modes(translation_modes_of(dim, u.size()));
         solver->factorize(hessian);
         statistics.factorization_time += timer.wall_time();
 

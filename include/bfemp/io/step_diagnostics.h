@@ -57,6 +57,10 @@ namespace bfemp
     /** max_p |v_p| alone, for the CFL check between diagnosed steps. */
     static double
     measure_max_speed(const ParticleSystem<dim> &particles);
+
+    /** max |v| over the nodes of the FEM bodies alone. */
+    static double
+    measure_max_speed(const std::vector<std::unique_ptr<FemBody<dim>>> &bodies);
   };
 } // namespace bfemp
 

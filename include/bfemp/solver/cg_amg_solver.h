@@ -46,7 +46,8 @@ namespace bfemp
      * from the next factorize().
      */
     void
-    set_constant_modes(const std::vector<std::vector<bool>> &constant_modes);
+    set_constant_modes(
+      const std::vector<std::vector<bool>> &constant_modes) override;
 
     /** Copies @p matrix to Trilinos and builds the AMG preconditioner. */
     void

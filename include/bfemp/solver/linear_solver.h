@@ -60,6 +60,15 @@ namespace bfemp
     solve(const Vector<double> &rhs, Vector<double> &solution) = 0;
 
     /** The name of the solver as in the prm entry, for messages. */
+    /**
+     * The near-null space of the matrices to come, one mask per vector
+     * component (its unknowns). Direct solvers do not need it; the default
+     * ignores it. Applies from the next factorize().
+     */
+    virtual void
+    set_constant_modes(const std::vector<std::vector<bool>> &)
+    {}
+
     virtual std::string
     name() const = 0;
 
