@@ -444,7 +444,8 @@ namespace
         parameters.boundaries,
         parameters.gravity,
         parameters.time.implicit_scheme(),
-        parameters.solver);
+        parameters.solver,
+        parameters.contact);
     }
 
     struct Pattern

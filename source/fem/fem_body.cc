@@ -173,5 +173,14 @@ namespace bfemp
 
 
   template class FemBody<2>;
+  template <int dim>
+  bool
+  FemBody<dim>::is_kinematic() const
+  {
+    return prescribed.size() == n_nodes();
+  }
+
+
+
   template class FemBody<3>;
 } // namespace bfemp

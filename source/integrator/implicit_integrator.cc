@@ -15,7 +15,8 @@ namespace bfemp
     const GridBoundaries<dim>                         &boundaries,
     const Tensor<1, dim>                              &gravity,
     const TimeParameters::ImplicitScheme              &scheme,
-    const SolverParameters                            &solver)
+    const SolverParameters                            &solver,
+    const ContactParameters                           &contact)
     : grid(grid)
     , particles(particles)
     , transfer(transfer)
@@ -24,6 +25,9 @@ namespace bfemp
     , gravity(gravity)
     , scheme(scheme)
     , with_mpm(particles.n_particles() > 0)
+    , contact_parameters(contact)
+    , with_contact(with_mpm && !fem_bodies.empty())
+    , with_friction(with_contact && contact.has_friction())
     , fem_elasticity(fem_bodies, dofs)
     , mpm_elasticity(grid, particles, materials, dofs)
     , potential(dofs)
@@ -31,11 +35,30 @@ namespace bfemp
   {
     // A scene switches on only the terms it has.
     std::vector<const EnergyTerm<dim> *> terms = {&inertia};
-    if (!fem_bodies.empty())
+    if (std::any_of(fem_bodies.begin(), fem_bodies.end(), [](const auto &b) {
+          return !b->is_kinematic();
+        }))
       terms.push_back(&fem_elasticity);
     if (with_mpm)
       terms.push_back(&mpm_elasticity);
+    if (with_contact)
+      {
+        contact_geometry = std::make_unique<ContactGeometry<dim>>(grid,
+                                                                  particles,
+                                                                  fem_bodies,
+                                                                  dofs);
+        barrier          = std::make_unique<BarrierTerm<dim>>(*contact_geometry,
+                                                     contact_parameters);
+        terms.push_back(barrier.get());
+      }
+    if (with_friction)
+      {
+        friction =
+          std::make_unique<FrictionTerm<dim>>(*barrier, contact_parameters);
+        terms.push_back(friction.get());
+      }
     potential.set_terms(terms);
+    last_contact.active = with_contact;
   }
 
 
@@ -72,13 +95,15 @@ namespace bfemp
   {
     std::vector<unsigned int> fem_nodes;
     for (const auto &body : fem_bodies)
-      fem_nodes.push_back(body->n_nodes());
+      fem_nodes.push_back(body->is_kinematic() ? 0 : body->n_nodes());
     dofs.reinit(fem_nodes, with_mpm ? state.mass : std::vector<double>());
 
     node_mass.resize(dofs.n_nodes());
     start_velocity.reinit(dofs.n_dofs());
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
-      for (unsigned int a = 0; a < fem_bodies[b]->n_nodes(); ++a)
+      for (unsigned int a = 0;
+           a < fem_bodies[b]->n_nodes() && !fem_bodies[b]->is_kinematic();
+           ++a)
         {
           const unsigned int node = dofs.fem_node(b, a);
           node_mass[node]         = fem_bodies[b]->masses()[a];
@@ -121,6 +146,8 @@ namespace bfemp
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
       {
         const FemBody<dim> &body = *fem_bodies[b];
+        if (body.is_kinematic())
+          continue; // an obstacle, no unknowns (ContactGeometry moves it)
         for (const unsigned int a : body.prescribed_nodes())
           {
             const Point<dim> &X = body.mesh().rest_position(a);
@@ -133,22 +160,23 @@ namespace bfemp
     // Grid walls and level sets hold FEM nodes inside them as they hold
     // grid nodes (prescribed nodes already are fully fixed).
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
-      for (const auto &c :
-           boundaries.implicit_constraints(grid.lattice(),
-                                           fem_bodies[b]->positions(),
-                                           fem_bodies[b]->velocities(),
-                                           end_time))
-        {
-          const unsigned int node  = dofs.fem_node(b, c.node);
-          const unsigned int index = dofs.constraint_index(node);
-          if (index != DofSpace<dim>::invalid &&
-              dofs.constraints()[index].free_projector.norm_square() == 0.)
-            continue;
-          add(node,
-              c.free_projector,
-              dt * c.obstacle_velocity,
-              c.obstacle_velocity);
-        }
+      if (!fem_bodies[b]->is_kinematic())
+        for (const auto &c :
+             boundaries.implicit_constraints(grid.lattice(),
+                                             fem_bodies[b]->positions(),
+                                             fem_bodies[b]->velocities(),
+                                             end_time))
+          {
+            const unsigned int node  = dofs.fem_node(b, c.node);
+            const unsigned int index = dofs.constraint_index(node);
+            if (index != DofSpace<dim>::invalid &&
+                dofs.constraints()[index].free_projector.norm_square() == 0.)
+              continue;
+            add(node,
+                c.free_projector,
+                dt * c.obstacle_velocity,
+                c.obstacle_velocity);
+          }
     if (with_mpm)
       for (const auto &c : boundaries.implicit_constraints(grid.lattice(),
                                                            state.mass,
@@ -175,6 +203,8 @@ namespace bfemp
       fem_elasticity.add_gradient(at_start, elastic_gradient);
     if (with_mpm)
       mpm_elasticity.add_gradient(at_start, elastic_gradient);
+    if (with_contact)
+      barrier->add_gradient(at_start, elastic_gradient);
     for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
       DofSpace<dim>::set(acceleration,
                          node,
@@ -243,15 +273,25 @@ namespace bfemp
   template <int dim>
   void
   ImplicitIntegrator<dim>::update_fem_bodies(const Vector<double> &u,
-                                             const Vector<double> &velocity)
+                                             const Vector<double> &velocity,
+                                             const double          end_time)
   {
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
       for (unsigned int a = 0; a < fem_bodies[b]->n_nodes(); ++a)
-        {
-          const unsigned int node = dofs.fem_node(b, a);
-          fem_bodies[b]->positions()[a] += DofSpace<dim>::get(u, node);
-          fem_bodies[b]->velocities()[a] = DofSpace<dim>::get(velocity, node);
-        }
+        if (fem_bodies[b]->is_kinematic())
+          {
+            const Point<dim> &X = fem_bodies[b]->mesh().rest_position(a);
+            fem_bodies[b]->positions()[a] =
+              fem_bodies[b]->motion().position(X, end_time);
+            fem_bodies[b]->velocities()[a] =
+              fem_bodies[b]->motion().velocity(X, end_time);
+          }
+        else
+          {
+            const unsigned int node = dofs.fem_node(b, a);
+            fem_bodies[b]->positions()[a] += DofSpace<dim>::get(u, node);
+            fem_bodies[b]->velocities()[a] = DofSpace<dim>::get(velocity, node);
+          }
   }
 
 
@@ -275,6 +315,74 @@ namespace bfemp
 
   template <int dim>
   void
+  ImplicitIntegrator<dim>::minimize_with_friction(Vector<double>    &u,
+                                                  const double       dt,
+                                                  const std::string &label)
+  {
+    last_contact.friction_updates   = 0;
+    last_contact.friction_converged = true;
+    double progress                 = 0.;
+    for (unsigned int j = 0;; ++j)
+      {
+        const NewtonStatistics s =
+          newton.minimize(potential,
+                          u,
+                          dt,
+                          j == 0
+                            ? label
+                            : label + ", friction update " + std::to_string(j),
+                          progress);
+        if (j == 0)
+          last_statistics = s;
+        else
+          last_statistics += s;
+        progress = 1.;
+        if (!with_friction)
+          return;
+        // Converged friction (Section 5): with (F, lambda, T) at the
+        // current x, the first Newton increment already met eps_d.
+        if (j > 0 && s.iterations == 1)
+          return;
+        if (j == contact_parameters.maximum_friction_iterations)
+          {
+            last_contact.friction_converged = false;
+            return;
+          }
+        const unsigned int lagged_pairs = friction->n_pairs();
+        friction->update(u);
+        ++last_contact.friction_updates;
+        // No friction before and after: the potential did not change.
+        if (lagged_pairs == 0 && friction->n_pairs() == 0)
+          return;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::measure_contact(const Vector<double> &u)
+  {
+    if (!with_contact)
+      return;
+    const auto m                  = barrier->measure(u);
+    last_contact.pairs            = m.pairs;
+    last_contact.particles        = m.particles;
+    last_contact.minimum_distance = m.minimum_distance;
+    last_contact.barrier_energy   = m.energy;
+    last_contact.force            = m.force;
+    if (with_friction)
+      {
+        last_contact.friction_pairs   = friction->n_pairs();
+        last_contact.step_dissipation = friction->dissipation(u);
+        last_contact.accumulated_dissipation += last_contact.step_dissipation;
+      }
+  }
+
+
+
+  template <int dim>
+  void
   ImplicitIntegrator<dim>::step(const double       dt,
                                 const double       time,
                                 const unsigned int step_number)
@@ -282,30 +390,70 @@ namespace bfemp
     scale = scheme.potential_weight() * dt * dt;
     mpm_elasticity.set_scale(scale);
     fem_elasticity.set_scale(scale);
+    if (with_contact)
+      barrier->set_scale(scale);
+    if (with_friction)
+      friction->set_scale(scale, dt);
 
     if (with_mpm)
       particles_to_grid();
     number_unknowns();
     constrain(dt, time + dt);
+    if (with_contact)
+      contact_geometry->begin_step(time + dt);
     const Vector<double> acceleration = start_acceleration();
     const Vector<double> predicted    = predictor(acceleration, dt);
     inertia.reinit(node_mass, predicted);
-    potential.setup_system();
 
-    // Algorithm 1 line 3: start from x^n, moved onto the constraints.
+    // Algorithm 1 lines 3, 5: start from x^n, friction lagged there. The
+    // Newton solver moves constrained nodes and obstacles onto their
+    // targets as collisions allow.
     Vector<double> u(dofs.n_dofs());
-    dofs.impose(u);
-    last_statistics = newton.minimize(potential,
-                                      u,
-                                      dt,
-                                      "step " + std::to_string(step_number) +
-                                        ", t = " + std::to_string(time + dt));
+    if (with_contact)
+      barrier->begin_step(u);
+    if (with_friction)
+      friction->update(u);
+    potential.setup_system();
+    minimize_with_friction(u,
+                           dt,
+                           "step " + std::to_string(step_number) +
+                             ", t = " + std::to_string(time + dt));
+    measure_contact(u);
 
     const Vector<double> velocity =
       end_velocity(u, predicted, acceleration, dt);
-    update_fem_bodies(u, velocity);
+    update_fem_bodies(u, velocity, time + dt);
     if (with_mpm)
       grid_to_particles(u, velocity);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ImplicitIntegrator<dim>::particles_touching_fem()
+  {
+    if (!with_contact)
+      return 0;
+    particles_to_grid();
+    number_unknowns();
+    contact_geometry->begin_step(0.);
+    const Vector<double> at_start(dofs.n_dofs());
+    return contact_geometry->particles_inside(at_start) +
+           (contact_geometry->minimum_distance(
+              at_start,
+              contact_parameters.activation_distance) > 0.
+              ? 0
+              : 1);
+  }
+
+
+
+  template <int dim>
+  const ContactStatistics<dim> &
+  ImplicitIntegrator<dim>::contact_statistics() const
+  {
+    return last_contact;
   }
 
 

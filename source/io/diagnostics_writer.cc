@@ -12,8 +12,32 @@ namespace bfemp
     : file(path)
     , implicit(implicit)
   {
+    write_header();
+  }
+
+
+
+  template <int dim>
+  DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
+                                            const unsigned int n_mpm,
+                                            const unsigned int n_fem)
+    : file(path)
+    , implicit(true)
+    , with_contact(true)
+    , n_mpm_bodies(n_mpm)
+    , n_fem_bodies(n_fem)
+  {
+    write_header();
+  }
+
+
+
+  template <int dim>
+  void
+  DiagnosticsWriter<dim>::write_header()
+  {
     if (!file)
-      throw SimulationError("cannot open '" + path + "' for writing");
+      throw SimulationError("cannot open the diagnostics file for writing");
     file << "step,time,dt,kinetic_energy,elastic_energy,gravitational_energy,"
             "total_energy";
     const char *axis[3] = {"x", "y", "z"};
@@ -28,6 +52,16 @@ namespace bfemp
       file << ",newton_iterations,line_search_backtracks,step_bound_hits,"
               "residual,dofs,assembly_time,factorization_time,solve_time,"
               "line_search_time";
+    if (with_contact)
+      {
+        file << ",contact_pairs,contact_particles,min_distance,"
+                "barrier_energy,friction_pairs,friction_updates,"
+                "friction_dissipation,ccd_bound_hits,partial_constraint_moves";
+        for (unsigned int m = 0; m < n_mpm_bodies; ++m)
+          for (unsigned int f = 0; f < n_fem_bodies; ++f)
+            for (unsigned int d = 0; d < dim; ++d)
+              file << ",contact_force_m" << m << "_f" << f << '_' << axis[d];
+      }
     file << std::endl;
   }
 
@@ -35,13 +69,14 @@ namespace bfemp
 
   template <int dim>
   void
-  DiagnosticsWriter<dim>::write(const unsigned int          step,
-                                const double                time,
-                                const double                dt,
-                                const StepDiagnostics<dim> &d,
-                                const double                wall_time,
-                                const NewtonStatistics     &newton,
-                                const unsigned int          n_dofs)
+  DiagnosticsWriter<dim>::write(const unsigned int            step,
+                                const double                  time,
+                                const double                  dt,
+                                const StepDiagnostics<dim>   &d,
+                                const double                  wall_time,
+                                const NewtonStatistics       &newton,
+                                const unsigned int            n_dofs,
+                                const ContactStatistics<dim> &contact)
   {
     std::ostringstream row;
     row << std::setprecision(12) << step << ',' << time << ',' << dt << ','
@@ -58,6 +93,25 @@ namespace bfemp
           << newton.bound_hits << ',' << newton.residual << ',' << n_dofs << ','
           << newton.assembly_time << ',' << newton.factorization_time << ','
           << newton.solve_time << ',' << newton.line_search_time;
+    if (with_contact)
+      {
+        row << std::setprecision(12) << ',' << contact.pairs << ','
+            << contact.particles << ',' << contact.minimum_distance << ','
+            << contact.barrier_energy << ',' << contact.friction_pairs << ','
+            << contact.friction_updates << ','
+            << contact.accumulated_dissipation << ',' << newton.ccd_bound_hits
+            << ',' << newton.partial_constraint_moves;
+        for (unsigned int m = 0; m < n_mpm_bodies; ++m)
+          for (unsigned int f = 0; f < n_fem_bodies; ++f)
+            {
+              const auto     entry = contact.force.find({m, f});
+              Tensor<1, dim> force;
+              if (entry != contact.force.end())
+                force = entry->second;
+              for (unsigned int d = 0; d < dim; ++d)
+                row << ',' << force[d];
+            }
+      }
     row << '\n';
     file << row.str() << std::flush;
   }

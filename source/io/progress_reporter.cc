@@ -30,7 +30,8 @@ namespace bfemp
                            const double       time,
                            const double       dt,
                            const unsigned int newton_iterations,
-                           const unsigned int n_dofs)
+                           const unsigned int n_dofs,
+                           const int          contact_pairs)
   {
     if (!enabled)
       return;
@@ -40,9 +41,11 @@ namespace bfemp
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
         << std::defaultfloat << "  Newton " << std::setw(3) << newton_iterations
-        << "  dofs " << n_dofs << std::fixed << std::setprecision(1)
-        << "  wall " << elapsed << " s  left ~" << remaining << " s"
-        << std::defaultfloat << std::endl;
+        << "  dofs " << n_dofs;
+    if (contact_pairs >= 0)
+      out << "  contacts " << contact_pairs;
+    out << std::fixed << std::setprecision(1) << "  wall " << elapsed
+        << " s  left ~" << remaining << " s" << std::defaultfloat << std::endl;
   }
 
 

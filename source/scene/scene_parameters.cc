@@ -249,6 +249,7 @@ namespace bfemp
     GridBoundaries<dim>::declare_parameters(prm, n_level_sets);
     OutputParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
     for (unsigned int b = 0; b < n_fem_bodies; ++b)
       {
         prm.enter_subsection(parameter_tools::numbered("fem body", b));
@@ -287,6 +288,7 @@ namespace bfemp
         prm.leave_subsection();
       }
     solver.parse_parameters(prm);
+    contact.parse_parameters(prm);
     fem_bodies.resize(prm.get_integer("number of FEM bodies"));
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
       {
@@ -301,6 +303,7 @@ namespace bfemp
                   "0",
                   "a scene needs at least one MPM body or one FEM body "
                   "('number of FEM bodies')");
+    contact.check_bodies(bodies.size(), fem_bodies.size());
     require_input(fem_bodies.empty() || time.is_implicit(),
                   "time",
                   "integrator",

@@ -31,16 +31,30 @@ namespace bfemp
     create_fem_bodies();
     create_bodies();
     if (parameters.time.is_implicit())
-      implicit_integrator = std::make_unique<ImplicitIntegrator<dim>>(
-        grid,
-        particle_system,
-        transfer,
-        materials,
-        fem_body_list,
-        parameters.boundaries,
-        parameters.gravity,
-        parameters.time.implicit_scheme(),
-        parameters.solver);
+      {
+        implicit_integrator = std::make_unique<ImplicitIntegrator<dim>>(
+          grid,
+          particle_system,
+          transfer,
+          materials,
+          fem_body_list,
+          parameters.boundaries,
+          parameters.gravity,
+          parameters.time.implicit_scheme(),
+          parameters.solver,
+          parameters.contact);
+        // Bodies must start apart (eq. 15): a particle inside an FEM mesh, or
+        // on its boundary where the barrier is infinite, has no valid state.
+        const unsigned int touching =
+          implicit_integrator->particles_touching_fem();
+        if (touching > 0)
+          throw InputError(
+            parameter_file + ": MPM bodies and FEM bodies overlap at t = 0: " +
+            std::to_string(touching) +
+            " particle(s) lie inside an FEM mesh or on its boundary. Bodies "
+            "must start apart; a particle closer than 'contact/activation "
+            "distance' feels the barrier from the first step.");
+      }
     else
       explicit_integrator =
         std::make_unique<ExplicitMPM<dim>>(grid,
@@ -354,10 +368,15 @@ namespace bfemp
     if (!fem_body_list.empty())
       fem_output =
         std::make_unique<FemOutput<dim>>(output_folder, fem_body_list);
-    DiagnosticsWriter<dim> diagnostics_writer(output_folder +
-                                                "/diagnostics.csv",
-                                              parameters.time.is_implicit());
-    ProgressReporter       progress(console,
+    const bool with_contact =
+      implicit_integrator && implicit_integrator->contact_statistics().active;
+    DiagnosticsWriter<dim> diagnostics_writer =
+      with_contact ? DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
+                                            parameters.bodies.size(),
+                                            parameters.fem_bodies.size())
+                   : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
+                                            parameters.time.is_implicit());
+    ProgressReporter progress(console,
                               run.end_time,
                               !run.quiet && !run.test_mode);
 
@@ -390,15 +409,16 @@ namespace bfemp
           {
             state = diagnostics();
             check_state(state);
-            diagnostics_writer.write(step,
-                                     time,
-                                     dt,
-                                     state,
-                                     progress.wall_time(),
-                                     newton_since_row,
-                                     implicit_integrator
-                                       ? implicit_integrator->n_dofs()
-                                       : 0);
+            diagnostics_writer.write(
+              step,
+              time,
+              dt,
+              state,
+              progress.wall_time(),
+              newton_since_row,
+              implicit_integrator ? implicit_integrator->n_dofs() : 0,
+              implicit_integrator ? implicit_integrator->contact_statistics()
+                                  : ContactStatistics<dim>());
             newton_since_row = NewtonStatistics();
           }
         else
@@ -416,11 +436,24 @@ namespace bfemp
               next_output += std::max(parameters.output.interval, dt);
           }
         if (implicit_integrator)
-          progress.report(step,
-                          time,
-                          dt,
-                          implicit_integrator->statistics().iterations,
-                          implicit_integrator->n_dofs());
+          {
+            const auto &contact = implicit_integrator->contact_statistics();
+            progress.report(step,
+                            time,
+                            dt,
+                            implicit_integrator->statistics().iterations,
+                            implicit_integrator->n_dofs(),
+                            contact.active ? static_cast<int>(contact.pairs)
+                                           : -1);
+            if (!contact.friction_converged)
+              std::cerr << "bfemp: warning: step " << step
+                        << ": friction not converged after "
+                        << contact.friction_updates
+                        << " updates ('contact/maximum friction "
+                           "iterations'); the step goes on with the last "
+                           "lagged friction."
+                        << std::endl;
+          }
         else
           progress.report(step, time, dt);
       }

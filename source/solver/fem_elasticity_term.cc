@@ -14,9 +14,11 @@ namespace bfemp
     : bodies(bodies)
     , dofs(dofs)
   {
+    // Kinematic bodies have no unknowns: their elastic energy is constant.
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      for (unsigned int e = 0; e < bodies[b]->elements().size(); ++e)
-        all_elements.push_back({b, e});
+      if (!bodies[b]->is_kinematic())
+        for (unsigned int e = 0; e < bodies[b]->elements().size(); ++e)
+          all_elements.push_back({b, e});
   }
 
 

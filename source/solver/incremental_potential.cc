@@ -32,6 +32,7 @@ namespace bfemp
     matrix.clear();
     node_sparsity.build(dim, pattern);
     matrix.reinit(pattern);
+    ++n_pattern_builds;
   }
 
 
@@ -89,6 +90,11 @@ namespace bfemp
   const SparseMatrix<double> &
   IncrementalPotential<dim>::hessian(const Vector<double> &u)
   {
+    bool missing = false;
+    for (const EnergyTerm<dim> *term : terms)
+      missing = term->couplings_missing(u, pattern) || missing;
+    if (missing)
+      setup_system();
     matrix = 0.;
     for (const EnergyTerm<dim> *term : terms)
       term->add_hessian(u, matrix);
@@ -183,13 +189,45 @@ namespace bfemp
 
   template <int dim>
   double
-  IncrementalPotential<dim>::step_bound(const Vector<double> &u,
-                                        const Vector<double> &p) const
+  IncrementalPotential<dim>::step_bound(const Vector<double>   &u,
+                                        const Vector<double>   &p,
+                                        const EnergyTerm<dim> **limiting) const
   {
     double bound = std::numeric_limits<double>::infinity();
     for (const EnergyTerm<dim> *term : terms)
-      bound = std::min(bound, term->step_bound(u, p));
+      {
+        const double b = term->step_bound(u, p);
+        if (b < bound)
+          {
+            bound = b;
+            if (limiting != nullptr)
+              *limiting = term;
+          }
+      }
     return bound;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementalPotential<dim>::set_obstacle_path(const double from,
+                                               const double to) const
+  {
+    for (const EnergyTerm<dim> *term : terms)
+      term->set_obstacle_path(from, to);
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementalPotential<dim>::minimum_distance(const Vector<double> &u) const
+  {
+    double minimum = std::numeric_limits<double>::infinity();
+    for (const EnergyTerm<dim> *term : terms)
+      minimum = std::min(minimum, term->minimum_distance(u));
+    return minimum;
   }
 
 

@@ -15,9 +15,12 @@ namespace bfemp
     iterations += other.iterations;
     backtracks += other.backtracks;
     bound_hits += other.bound_hits;
+    ccd_bound_hits += other.ccd_bound_hits;
+    partial_constraint_moves += other.partial_constraint_moves;
     residual            = other.residual;
     energy              = other.energy;
     minimum_determinant = other.minimum_determinant;
+    minimum_distance    = other.minimum_distance;
     assembly_time += other.assembly_time;
     factorization_time += other.factorization_time;
     solve_time += other.solve_time;
@@ -78,12 +81,15 @@ namespace bfemp
   {
     // Filtering (Section 5): no trial point may reach det F = 0 or a
     // contact distance of 0, so start below the first such root.
-    const double bound = potential.step_bound(u, p);
-    double       step  = 1.;
+    const EnergyTerm<dim> *limiting = nullptr;
+    const double           bound    = potential.step_bound(u, p, &limiting);
+    double                 step     = 1.;
     if (parameters.step_bound_fraction * bound < 1.)
       {
         step = parameters.step_bound_fraction * bound;
         ++statistics.bound_hits;
+        if (limiting->is_contact())
+          ++statistics.ccd_bound_hits;
       }
     // Near the minimizer the decrease t |g.p| falls below the round-off of
     // E, and comparing energies decides nothing. There the change of E is
@@ -121,16 +127,51 @@ namespace bfemp
 
 
   template <int dim>
+  double
+  NewtonSolver<dim>::move_constraints(IncrementalPotential<dim> &potential,
+                                      Vector<double>            &u,
+                                      const double               progress,
+                                      double                    &energy,
+                                      NewtonStatistics &statistics) const
+  {
+    // The rest of the way to the targets: the constrained components of
+    // impose(u) - u, and the obstacles from progress to 1.
+    Vector<double> move = u;
+    potential.dof_space().impose(move);
+    move -= u;
+    potential.set_obstacle_path(progress, 1.);
+    const double bound = potential.step_bound(u, move);
+    double       t     = 1.;
+    if (parameters.step_bound_fraction * bound < 1.)
+      {
+        t = parameters.step_bound_fraction * bound;
+        ++statistics.partial_constraint_moves;
+      }
+    u.add(t, move);
+    const double moved = t == 1. ? 1. : progress + t * (1. - progress);
+    if (t == 1.)
+      potential.dof_space().impose(u); // exact targets, free of round-off
+    potential.set_obstacle_path(moved, moved);
+    energy = potential.value(u);
+    return moved;
+  }
+
+
+
+  template <int dim>
   NewtonStatistics
   NewtonSolver<dim>::minimize(IncrementalPotential<dim> &potential,
                               Vector<double>            &u,
                               const double               dt,
-                              const std::string         &step_label)
+                              const std::string         &step_label,
+                              const double               start_progress)
   {
     NewtonStatistics statistics;
     Timer            timer;
     Vector<double>   gradient, direction(u.size()), trial(u.size());
-    double           energy = potential.value(u);
+    double           progress = start_progress;
+    potential.set_obstacle_path(progress, progress);
+    double energy = potential.value(u);
     if (!std::isfinite(energy))
       throw SimulationError(step_label +
                             ": the incremental potential is not finite at "
@@ -147,7 +188,12 @@ namespace bfemp
               << "||p||_inf / dt = " << statistics.residual
               << " m/s, 'solver/Newton tolerance' = "
               << parameters.newton_tolerance << " m/s, energy " << energy
-              << " J). Reduce the time step, or raise 'solver/maximum Newton "
+              << " J";
+      if (progress < 1.)
+        message << ", prescribed motions and obstacles moved "
+                << 100. * progress
+                << " % of the way to their targets: something blocks them";
+      message << "). Reduce the time step, or raise 'solver/maximum Newton "
                  "iterations'.";
       throw SimulationError(message.str());
     };
@@ -157,6 +203,12 @@ namespace bfemp
         if (statistics.iterations == parameters.maximum_newton_iterations)
           fail("no convergence");
         ++statistics.iterations;
+
+        timer.restart();
+        if (progress < 1.)
+          progress =
+            move_constraints(potential, u, progress, energy, statistics);
+        statistics.line_search_time += timer.wall_time();
 
         timer.restart();
         potential.gradient(u, gradient);
@@ -208,13 +260,16 @@ namespace bfemp
               fail("an accepted iterate has det F = " +
                    std::to_string(statistics.minimum_determinant) +
                    " <= 0 (invariant check)");
+            statistics.minimum_distance = potential.minimum_distance(u);
+            if (!(statistics.minimum_distance > 0.))
+              fail("an accepted iterate has a particle-boundary distance " +
+                   std::to_string(statistics.minimum_distance) +
+                   " <= 0 (invariant check)");
           }
-        if (statistics.residual < parameters.newton_tolerance)
+        if (statistics.residual < parameters.newton_tolerance && progress == 1.)
           break;
-        if (step == 0.)
-          {
-            fail("the line search found no decrease of the energy");
-          }
+        if (step == 0. && !(statistics.residual < parameters.newton_tolerance))
+          fail("the line search found no decrease of the energy");
       }
     statistics.energy = energy;
     return statistics;

@@ -73,6 +73,13 @@ namespace bfemp
     const std::vector<unsigned int> &
     prescribed_nodes() const;
 
+    /**
+     * Every node prescribed: the body is a kinematic boundary (BFEMP
+     * Section 4.4) with no unknowns in the implicit solve.
+     */
+    bool
+    is_kinematic() const;
+
     const PrescribedMotion<dim> &
     motion() const;
 

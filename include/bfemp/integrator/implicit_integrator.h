@@ -2,6 +2,11 @@
 #define bfemp_integrator_implicit_integrator_h
 
 #include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/contact/barrier_term.h>
+#include <bfemp/contact/contact_geometry.h>
+#include <bfemp/contact/contact_parameters.h>
+#include <bfemp/contact/contact_statistics.h>
+#include <bfemp/contact/friction_term.h>
 #include <bfemp/fem/fem_body.h>
 #include <bfemp/grid/grid_state.h>
 #include <bfemp/integrator/time_parameters.h>
@@ -14,6 +19,7 @@
 #include <bfemp/solver/newton_solver.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -21,15 +27,21 @@ namespace bfemp
 {
   /**
    * Implicit time integration of MPM bodies and FEM bodies in one
-   * incremental potential (BFEMP Sections 2.2, 3 and 5, Algorithm 1 without
-   * contact): backward Euler or midpoint Newmark through the (alpha, beta,
-   * gamma) family of eq. 21, minimized by projected Newton (Algorithm 2).
+   * incremental potential (BFEMP Sections 2.2, 3, 4 and 5, Algorithm 1):
+   * backward Euler or midpoint Newmark through the (alpha, beta, gamma)
+   * family of eq. 21, with barrier contact between particles and FEM
+   * boundaries and lagged friction, minimized by projected Newton
+   * (Algorithm 2).
    *
    * One step, as step() spells it out:
    *   P2G (Tables 1-3) -> unified DoFs of FEM nodes and active grid nodes
+   *      (kinematic FEM bodies have none: they are moving obstacles)
    *   -> constraints (prescribed FEM nodes, grid boundaries)
    *   -> predictor x^ = x^n + dt v^n + alpha (1 - 2 beta) dt^2 a^n
-   *   -> minimize 1/2 ||x - x^||_M^2 + 2 alpha beta dt^2 Psi(x) (eq. 22)
+   *   -> friction lagged at x^n (Algorithm 1 line 5)
+   *   -> repeat: minimize 1/2 ||x - x^||_M^2 + 2 alpha beta dt^2
+   *      (Psi + B + D)(x) (eq. 38), re-lag friction, until the Newton
+   *      tolerance holds with the updated friction (lines 6-10)
    *   -> v^{n+1} = v^n + dt ((1 - gamma) a^n + gamma a^{n+1}) (eq. 21)
    *   -> FEM nodes move; G2P of x~, v~ and F (Tables 1-3).
    */
@@ -46,7 +58,8 @@ namespace bfemp
       const GridBoundaries<dim>                         &boundaries,
       const Tensor<1, dim>                              &gravity,
       const TimeParameters::ImplicitScheme              &scheme,
-      const SolverParameters                            &solver);
+      const SolverParameters                            &solver,
+      const ContactParameters                           &contact);
 
     /** Advances from @p time to time + dt; throws SimulationError. */
     void
@@ -63,6 +76,17 @@ namespace bfemp
     /** Unknowns of the last step. */
     unsigned int
     n_dofs() const;
+
+    /** Contact state at the end of the last step. */
+    const ContactStatistics<dim> &
+    contact_statistics() const;
+
+    /**
+     * Particles inside an FEM element or at distance 0 from an FEM
+     * boundary now (the check at t = 0: bodies must not overlap).
+     */
+    unsigned int
+    particles_touching_fem();
 
   private:
     /** P2G of mass and momentum (Algorithm 1 line 2); v = (m v) / m. */
@@ -98,11 +122,26 @@ namespace bfemp
 
     /** x^{n+1} = x^n + u, v^{n+1} for the FEM nodes (Algorithm 1 line 11). */
     void
-    update_fem_bodies(const Vector<double> &u, const Vector<double> &velocity);
+    update_fem_bodies(const Vector<double> &u,
+                      const Vector<double> &velocity,
+                      const double          end_time);
 
     /** G2P of x~, v~ and F (Algorithm 1 line 12). */
     void
     grid_to_particles(const Vector<double> &u, const Vector<double> &velocity);
+
+    /**
+     * Algorithm 1 lines 4-10: minimizations alternating with friction
+     * updates until the friction is converged (or the limit is reached).
+     */
+    void
+    minimize_with_friction(Vector<double>    &u,
+                           const double       dt,
+                           const std::string &label);
+
+    /** Records the contact state at the step's solution u. */
+    void
+    measure_contact(const Vector<double> &u);
 
     const BackgroundGrid<dim>                  &grid;
     ParticleSystem<dim>                        &particles;
@@ -113,12 +152,18 @@ namespace bfemp
     const TimeParameters::ImplicitScheme        scheme;
     const bool                                  with_mpm;
 
-    DofSpace<dim>             dofs;
-    InertiaTerm<dim>          inertia;
-    FemElasticityTerm<dim>    fem_elasticity;
-    MpmElasticityTerm<dim>    mpm_elasticity;
-    IncrementalPotential<dim> potential;
-    NewtonSolver<dim>         newton;
+    DofSpace<dim>                         dofs;
+    const ContactParameters               contact_parameters;
+    const bool                            with_contact;
+    const bool                            with_friction;
+    InertiaTerm<dim>                      inertia;
+    FemElasticityTerm<dim>                fem_elasticity;
+    MpmElasticityTerm<dim>                mpm_elasticity;
+    std::unique_ptr<ContactGeometry<dim>> contact_geometry;
+    std::unique_ptr<BarrierTerm<dim>>     barrier;
+    std::unique_ptr<FrictionTerm<dim>>    friction;
+    IncrementalPotential<dim>             potential;
+    NewtonSolver<dim>                     newton;
 
     GridState<dim>      state;
     std::vector<double> node_mass;
@@ -127,6 +172,7 @@ namespace bfemp
     std::vector<Tensor<1, dim>> constraint_velocity;
     double                      scale = 0.;
     NewtonStatistics            last_statistics;
+    ContactStatistics<dim>      last_contact;
   };
 } // namespace bfemp
 

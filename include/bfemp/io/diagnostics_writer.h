@@ -1,6 +1,7 @@
 #ifndef bfemp_io_diagnostics_writer_h
 #define bfemp_io_diagnostics_writer_h
 
+#include <bfemp/contact/contact_statistics.h>
 #include <bfemp/io/step_diagnostics.h>
 #include <bfemp/solver/newton_solver.h>
 
@@ -27,18 +28,37 @@ namespace bfemp
      */
     DiagnosticsWriter(const std::string &path, const bool implicit = false);
 
+    /**
+     * Scenes with particle-mesh contact add its columns: pairs within dhat,
+     * particles in contact, the least distance, the barrier energy, friction
+     * pairs and updates, the accumulated friction dissipation, the CCD step
+     * bound hits and partial moves of prescribed motions (summed since the
+     * previous row), and the contact force on every FEM body from every MPM
+     * body (contact_force_m<m>_f<f>_<axis>).
+     */
+    DiagnosticsWriter(const std::string &path,
+                      const unsigned int n_mpm_bodies,
+                      const unsigned int n_fem_bodies);
+
     void
-    write(const unsigned int          step,
-          const double                time,
-          const double                dt,
-          const StepDiagnostics<dim> &diagnostics,
-          const double                wall_time,
-          const NewtonStatistics     &newton = NewtonStatistics(),
-          const unsigned int          n_dofs = 0);
+    write(const unsigned int            step,
+          const double                  time,
+          const double                  dt,
+          const StepDiagnostics<dim>   &diagnostics,
+          const double                  wall_time,
+          const NewtonStatistics       &newton  = NewtonStatistics(),
+          const unsigned int            n_dofs  = 0,
+          const ContactStatistics<dim> &contact = ContactStatistics<dim>());
 
   private:
+    void
+    write_header();
+
     std::ofstream file;
     const bool    implicit;
+    const bool    with_contact = false;
+    unsigned int  n_mpm_bodies = 0;
+    unsigned int  n_fem_bodies = 0;
   };
 } // namespace bfemp
 

@@ -28,7 +28,8 @@ namespace bfemp
            const double       time,
            const double       dt,
            const unsigned int newton_iterations,
-           const unsigned int n_dofs);
+           const unsigned int n_dofs,
+           const int          contact_pairs = -1);
 
     /** Wall seconds since construction. */
     double

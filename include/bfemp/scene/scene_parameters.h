@@ -9,6 +9,7 @@
 #include <bfemp/io/output_parameters.h>
 #include <bfemp/particles/body_parameters.h>
 #include <bfemp/solver/solver_parameters.h>
+#include <bfemp/contact/contact_parameters.h>
 #include <bfemp/transfer/transfer_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -39,6 +40,7 @@ namespace bfemp
     std::vector<BodyParameters<dim>>    bodies;
     std::vector<FemBodyParameters<dim>> fem_bodies;
     SolverParameters                    solver;
+    ContactParameters                   contact;
     /** Directory of the prm file: relative mesh files are found there. */
     std::string directory = ".";
 

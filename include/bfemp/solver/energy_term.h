@@ -4,6 +4,7 @@
 #include <bfemp/solver/node_sparsity.h>
 
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <limits>
@@ -68,6 +69,40 @@ namespace bfemp
     magnitude() const
     {
       return 0.;
+    }
+
+    /**
+     * Terms whose couplings depend on u (contact pairs) register those at u
+     * and return true if the current @p pattern lacks some of them; the
+     * potential then rebuilds its pattern from add_couplings().
+     */
+    virtual bool
+    couplings_missing(const Vector<double> &, const SparsityPattern &) const
+    {
+      return false;
+    }
+
+    /**
+     * Kinematic obstacles (fully prescribed FEM bodies) sit at progress
+     * @p from of their motion over the step; step_bound() moves them on to
+     * @p to along with u + t p. Terms without obstacles ignore this.
+     */
+    virtual void
+    set_obstacle_path(const double /*from*/, const double /*to*/) const
+    {}
+
+    /** Whether step_bound() is a collision (CCD) bound, for statistics. */
+    virtual bool
+    is_contact() const
+    {
+      return false;
+    }
+
+    /** Smallest contact distance of the term at u (+inf if it has none). */
+    virtual double
+    minimum_distance(const Vector<double> &) const
+    {
+      return std::numeric_limits<double>::infinity();
     }
 
     /** Smallest det F of the term at u (+inf if it has none). */

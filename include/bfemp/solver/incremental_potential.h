@@ -52,13 +52,29 @@ namespace bfemp
     void
     gradient(const Vector<double> &u, Vector<double> &gradient) const;
 
-    /** P H(u) P + (I - P) with H the sum of the terms' PSD Hessians. */
+    /**
+     * P H(u) P + (I - P) with H the sum of the terms' PSD Hessians. Rebuilds
+     * the sparsity pattern first if a term's couplings at u outgrew it.
+     */
     const SparseMatrix<double> &
     hessian(const Vector<double> &u);
 
-    /** The smallest step bound of any term along p. */
+    /**
+     * The smallest step bound of any term along p; @p limiting (if given)
+     * receives the term that set it.
+     */
     double
-    step_bound(const Vector<double> &u, const Vector<double> &p) const;
+    step_bound(const Vector<double>   &u,
+               const Vector<double>   &p,
+               const EnergyTerm<dim> **limiting = nullptr) const;
+
+    /** Forwards the obstacle path to the terms (EnergyTerm). */
+    void
+    set_obstacle_path(const double from, const double to) const;
+
+    /** Smallest contact distance of any term at u. */
+    double
+    minimum_distance(const Vector<double> &u) const;
 
     /** Smallest det F of any element or particle at u. */
     double
@@ -88,6 +104,15 @@ namespace bfemp
     std::vector<const EnergyTerm<dim> *> terms;
     SparsityPattern                      pattern;
     SparseMatrix<double>                 matrix;
+    unsigned int                         n_pattern_builds = 0;
+
+  public:
+    /** How often setup_system() has built a pattern (diagnostics). */
+    unsigned int
+    n_sparsity_builds() const
+    {
+      return n_pattern_builds;
+    }
   };
 } // namespace bfemp
 

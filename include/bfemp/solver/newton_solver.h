@@ -18,16 +18,26 @@ namespace bfemp
     unsigned int backtracks = 0;
     /** Iterations whose first trial step was cut by the det F bound. */
     unsigned int bound_hits = 0;
+    /** Of those, the iterations cut by collision detection (contact). */
+    unsigned int ccd_bound_hits = 0;
+    /**
+     * Iterations that moved constrained DoFs and kinematic obstacles only
+     * part of the way to their targets, because the full move would have
+     * crossed a particle or inverted an element.
+     */
+    unsigned int partial_constraint_moves = 0;
     /** ||p||_inf / dt of the last iteration [m/s]. */
     double residual = 0.;
     /** E at the minimizer. */
     double energy = 0.;
     /** Smallest det F over accepted iterates (with check invariants). */
     double minimum_determinant = 0.;
-    double assembly_time       = 0.;
-    double factorization_time  = 0.;
-    double solve_time          = 0.;
-    double line_search_time    = 0.;
+    /** Smallest contact distance over accepted iterates (check invariants). */
+    double minimum_distance   = 0.;
+    double assembly_time      = 0.;
+    double factorization_time = 0.;
+    double solve_time         = 0.;
+    double line_search_time   = 0.;
 
     NewtonStatistics &
     operator+=(const NewtonStatistics &other);
@@ -50,20 +60,40 @@ namespace bfemp
     explicit NewtonSolver(const SolverParameters &parameters);
 
     /**
-     * Minimizes @p potential starting from @p u (which must meet the
-     * constraints and have every det F > 0); throws SimulationError naming
-     * @p step_label, the residual and the energy if it does not converge.
+     * Minimizes @p potential starting from @p u, which must have every
+     * det F > 0 and every contact distance > 0 with kinematic obstacles at
+     * the start of their path (@p start_progress, 0 at the start of a time
+     * step). Constrained DoFs move to their
+     * targets and obstacles to the ends of their paths as fast as the same
+     * det F and collision filter allows (move_constraints()); the Newton
+     * iterations run in between, and convergence needs both there.
+     * Throws SimulationError naming @p step_label, the residual and the
+     * energy if it does not converge.
      */
     NewtonStatistics
     minimize(IncrementalPotential<dim> &potential,
              Vector<double>            &u,
              const double               dt,
-             const std::string         &step_label);
+             const std::string         &step_label,
+             const double               start_progress = 0.);
 
     const LinearSolver &
     linear_solver() const;
 
   private:
+    /**
+     * Moves the constrained components of @p u towards their targets and
+     * the obstacles towards the ends of their paths by the largest common
+     * fraction that the step bound allows (all of the way if nothing is in
+     * the way). Returns the new obstacle progress; @p energy is updated.
+     */
+    double
+    move_constraints(IncrementalPotential<dim> &potential,
+                     Vector<double>            &u,
+                     const double               progress,
+                     double                    &energy,
+                     NewtonStatistics          &statistics) const;
+
     /**
      * Backtracks from the bounded trial step; returns the accepted step
      * length (0 if no step decreased E enough).

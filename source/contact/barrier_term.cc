@@ -1,0 +1,565 @@
+#include <bfemp/base/parallel_sum.h>
+#include <bfemp/contact/barrier.h>
+#include <bfemp/contact/barrier_term.h>
+#include <bfemp/contact/distance.h>
+#include <bfemp/solver/positive_semidefinite.h>
+
+#include <deal.II/base/parallel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bfemp
+{
+  namespace
+  {
+    /**
+     * Adds weight * b(s(y)) and its derivatives to a particle's local
+     * stencil, where the squared distance s depends on the particle and the
+     * primitive nodes at local indices @p local (particle first).
+     */
+    template <int dim, int n_points>
+    void
+    add_barrier(const double                              weight,
+                const SquaredDistance<n_points * dim>    &s,
+                const std::array<unsigned int, n_points> &local,
+                const double                              dhat,
+                const double                              kappa,
+                double                                   &energy,
+                Vector<double>                           &gradient,
+                FullMatrix<double>                       *hessian)
+    {
+      const BarrierDerivatives b =
+        barrier_of_squared_distance(s.value, dhat, kappa);
+      energy += weight * b.value;
+      for (unsigned int i = 0; i < n_points * dim; ++i)
+        gradient[dim * local[i / dim] + i % dim] +=
+          weight * b.first * s.gradient[i];
+      if (hessian != nullptr)
+        for (unsigned int i = 0; i < n_points * dim; ++i)
+          {
+            const unsigned int row = dim * local[i / dim] + i % dim;
+            for (unsigned int j = 0; j < n_points * dim; ++j)
+              (*hessian)(row, dim * local[j / dim] + j % dim) +=
+                weight * (b.second * s.gradient[i] * s.gradient[j] +
+                          b.first * s.hessian[i][j]);
+          }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  BarrierTerm<dim>::BarrierTerm(ContactGeometry<dim>    &geometry,
+                                const ContactParameters &parameters)
+    : contact_geometry(geometry)
+    , parameters(parameters)
+  {}
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::set_scale(const double s)
+  {
+    scale = s;
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::set_hessian_projection(const bool p)
+  {
+    project = p;
+  }
+
+
+
+  template <int dim>
+  std::string
+  BarrierTerm<dim>::name() const
+  {
+    return "contact barrier";
+  }
+
+
+
+  template <int dim>
+  bool
+  BarrierTerm<dim>::is_contact() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  const ContactGeometry<dim> &
+  BarrierTerm<dim>::geometry() const
+  {
+    return contact_geometry;
+  }
+
+
+
+  template <int dim>
+  typename BarrierTerm<dim>::ParticleContact
+  BarrierTerm<dim>::evaluate(
+    const typename ContactGeometry<dim>::NearPairs &near,
+    const unsigned int                              k,
+    const std::vector<std::vector<Point<dim>>>     &x,
+    const Vector<double>                           &u,
+    const bool                                      with_hessian) const
+  {
+    using FacetReference  = typename ContactGeometry<dim>::FacetReference;
+    const double    dhat  = parameters.activation_distance;
+    const double    kappa = parameters.barrier_stiffness;
+    const double    dhat2 = dhat * dhat;
+    ParticleContact result;
+    result.particle = near.particles[k];
+    const Point<dim> xq =
+      contact_geometry.particle_position(result.particle, u);
+    const double omega = contact_geometry.particle_weight(result.particle);
+
+    // The local stencil: the particle (0), then each FEM node once.
+    const auto local = [&](const unsigned int s, const unsigned int a) {
+      for (unsigned int i = 0; i < result.nodes.size(); ++i)
+        if (result.nodes[i].first == s && result.nodes[i].second == a)
+          return i + 1;
+      result.nodes.emplace_back(s, a);
+      return static_cast<unsigned int>(result.nodes.size());
+    };
+    for (unsigned int j = near.offsets[k]; j < near.offsets[k + 1]; ++j)
+      for (const unsigned int a :
+           contact_geometry.surface(near.facets[j].surface)
+             .facets()[near.facets[j].facet])
+        local(near.facets[j].surface, a);
+    const unsigned int n = (1 + result.nodes.size()) * dim;
+    result.gradient.reinit(n);
+    if (with_hessian)
+      result.hessian.reinit(n, n);
+    FullMatrix<double> *hessian = with_hessian ? &result.hessian : nullptr;
+
+    double nearest = std::numeric_limits<double>::infinity();
+    // Each term's share of the force on the particle, by surface.
+    Vector<double> before(n);
+    const auto     book_force = [&](const unsigned int s) {
+      Tensor<1, dim> f;
+      for (unsigned int d = 0; d < dim; ++d)
+        f[d] = -(result.gradient[d] - before[d]);
+      before = result.gradient;
+      for (auto &entry : result.surfaces)
+        if (entry.surface == s)
+          {
+            entry.force += f;
+            return;
+          }
+      result.surfaces.push_back(
+        {s, f, 0, std::numeric_limits<double>::infinity()});
+    };
+    const auto book_facet = [&](const FacetReference &r, const double s2) {
+      nearest = std::min(nearest, s2);
+      book_force(r.surface);
+      for (auto &entry : result.surfaces)
+        if (entry.surface == r.surface && s2 < entry.nearest_squared_distance)
+          {
+            entry.nearest_facet            = r.facet;
+            entry.nearest_squared_distance = s2;
+          }
+    };
+
+    std::vector<std::pair<unsigned int, unsigned int>> vertices, edges;
+    for (unsigned int j = near.offsets[k]; j < near.offsets[k + 1]; ++j)
+      {
+        const FacetReference &r = near.facets[j];
+        const auto           &facet =
+          contact_geometry.surface(r.surface).facets()[r.facet];
+        const auto &xs = x[r.surface];
+        if constexpr (dim == 2)
+          {
+            const auto s =
+              point_edge_squared_distance<2>(xq, xs[facet[0]], xs[facet[1]]);
+            add_barrier<2, 3>(
+              omega,
+              s,
+              {{0, local(r.surface, facet[0]), local(r.surface, facet[1])}},
+              dhat,
+              kappa,
+              result.energy,
+              result.gradient,
+              hessian);
+            book_facet(r, s.value);
+          }
+        else
+          {
+            const auto s = point_triangle_squared_distance(xq,
+                                                           xs[facet[0]],
+                                                           xs[facet[1]],
+                                                           xs[facet[2]]);
+            add_barrier<3, 4>(omega,
+                              s,
+                              {{0,
+                                local(r.surface, facet[0]),
+                                local(r.surface, facet[1]),
+                                local(r.surface, facet[2])}},
+                              dhat,
+                              kappa,
+                              result.energy,
+                              result.gradient,
+                              hessian);
+            book_facet(r, s.value);
+            for (const unsigned int e :
+                 contact_geometry.surface(r.surface).facet_edges(r.facet))
+              edges.emplace_back(r.surface, e);
+          }
+        for (const unsigned int a : facet)
+          vertices.emplace_back(r.surface, a);
+      }
+    result.distance = std::sqrt(nearest);
+
+    // Duplicate subtraction (eqs. 31, 32) over the lower-dimensional
+    // primitives of the facets near the particle: every primitive within
+    // dhat of it belongs to such a facet.
+    const auto unique =
+      [](std::vector<std::pair<unsigned int, unsigned int>> &v) {
+        std::sort(v.begin(), v.end());
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+      };
+    if constexpr (dim == 3)
+      {
+        unique(edges);
+        for (const auto &[s, e] : edges)
+          {
+            const ContactSurface<dim> &surface = contact_geometry.surface(s);
+            const double               weight  = surface.edge_weight(e);
+            const auto                &edge    = surface.edges()[e];
+            if (weight == 0.)
+              continue;
+            const auto d =
+              point_edge_squared_distance<3>(xq, x[s][edge[0]], x[s][edge[1]]);
+            if (d.value >= dhat2)
+              continue;
+            add_barrier<3, 3>(omega * weight,
+                              d,
+                              {{0, local(s, edge[0]), local(s, edge[1])}},
+                              dhat,
+                              kappa,
+                              result.energy,
+                              result.gradient,
+                              hessian);
+            book_force(s);
+          }
+      }
+    unique(vertices);
+    for (const auto &[s, a] : vertices)
+      {
+        const ContactSurface<dim> &surface = contact_geometry.surface(s);
+        const double weight = surface.vertex_weight(surface.vertex_index(a));
+        if (weight == 0.)
+          continue;
+        const auto d = point_point_squared_distance<dim>(xq, x[s][a]);
+        if (d.value >= dhat2)
+          continue;
+        add_barrier<dim, 2>(omega * weight,
+                            d,
+                            {{0, local(s, a)}},
+                            dhat,
+                            kappa,
+                            result.energy,
+                            result.gradient,
+                            hessian);
+        book_force(s);
+      }
+    if (with_hessian && project)
+      project_to_positive_semidefinite(result.hessian);
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename BarrierTerm<dim>::ParticleContact>
+  BarrierTerm<dim>::contacts(const Vector<double> &u,
+                             const bool            with_hessian) const
+  {
+    const auto near =
+      contact_geometry.near_pairs(u, parameters.activation_distance);
+    const auto                   x = contact_geometry.surface_positions(u);
+    std::vector<ParticleContact> result(near.size());
+    parallel::apply_to_subranges(
+      0u,
+      near.size(),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int k = begin; k < end; ++k)
+          result[k] = evaluate(near, k, x, u, with_hessian);
+      },
+      16);
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  BarrierTerm<dim>::clique(const ParticleContact &contact) const
+  {
+    const auto stencil = contact_geometry.stencil_nodes(contact.particle);
+    std::vector<unsigned int> nodes(stencil.begin(), stencil.end());
+    for (const auto &[s, a] : contact.nodes)
+      {
+        const unsigned int node = contact_geometry.node_dof(s, a);
+        if (node != DofSpace<dim>::invalid)
+          nodes.push_back(node);
+      }
+    return nodes;
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::begin_step(const Vector<double> &u)
+  {
+    registered.assign(contact_geometry.n_particles(), {});
+    // Pairs a little farther than dhat join the pattern at once, so that
+    // the first approach within the step does not rebuild it.
+    const auto near =
+      contact_geometry.near_pairs(u, 2. * parameters.activation_distance);
+    for (unsigned int k = 0; k < near.size(); ++k)
+      {
+        auto &nodes = registered[near.particles[k]];
+        for (unsigned int j = near.offsets[k]; j < near.offsets[k + 1]; ++j)
+          for (const unsigned int a :
+               contact_geometry.surface(near.facets[j].surface)
+                 .facets()[near.facets[j].facet])
+            {
+              const unsigned int node =
+                contact_geometry.node_dof(near.facets[j].surface, a);
+              if (node != DofSpace<dim>::invalid)
+                nodes.push_back(node);
+            }
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::add_couplings(NodeSparsity &sparsity) const
+  {
+    for (unsigned int q = 0; q < registered.size(); ++q)
+      if (!registered[q].empty())
+        {
+          const auto                stencil = contact_geometry.stencil_nodes(q);
+          std::vector<unsigned int> nodes(stencil.begin(), stencil.end());
+          nodes.insert(nodes.end(), registered[q].begin(), registered[q].end());
+          sparsity.add_clique(nodes.data(),
+                              static_cast<unsigned int>(nodes.size()));
+        }
+  }
+
+
+
+  template <int dim>
+  bool
+  BarrierTerm<dim>::couplings_missing(const Vector<double>  &u,
+                                      const SparsityPattern &pattern) const
+  {
+    bool missing = false;
+    for (const ParticleContact &contact : contacts(u, false))
+      {
+        const std::vector<unsigned int> nodes = clique(contact);
+        bool                            found = true;
+        for (const unsigned int i : nodes)
+          for (const unsigned int j : nodes)
+            if (found && !pattern.exists(dim * i, dim * j))
+              found = false;
+        if (found)
+          continue;
+        missing         = true;
+        auto      &list = registered[contact.particle];
+        const auto stencil_size =
+          contact_geometry.stencil_nodes(contact.particle).size();
+        list.insert(list.end(), nodes.begin() + stencil_size, nodes.end());
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+      }
+    return missing;
+  }
+
+
+
+  template <int dim>
+  double
+  BarrierTerm<dim>::value(const Vector<double> &u) const
+  {
+    const auto near =
+      contact_geometry.near_pairs(u, parameters.activation_distance);
+    const auto x   = contact_geometry.surface_positions(u);
+    double energy  = chunked_sum<double>(near.size(), [&](const std::size_t k) {
+      return evaluate(near, static_cast<unsigned int>(k), x, u, false).energy;
+    });
+    last_magnitude = scale * energy;
+    return scale * energy;
+  }
+
+
+
+  template <int dim>
+  double
+  BarrierTerm<dim>::magnitude() const
+  {
+    return std::abs(last_magnitude);
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::add_gradient(const Vector<double> &u,
+                                 Vector<double>       &gradient) const
+  {
+    for (const ParticleContact &contact : contacts(u, false))
+      {
+        Tensor<1, dim> particle_gradient;
+        for (unsigned int d = 0; d < dim; ++d)
+          particle_gradient[d] = scale * contact.gradient[d];
+        const auto nodes   = contact_geometry.stencil_nodes(contact.particle);
+        const auto weights = contact_geometry.stencil_weights(contact.particle);
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            gradient[dim * nodes[i] + d] += weights[i] * particle_gradient[d];
+        for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+          {
+            const unsigned int node =
+              contact_geometry.node_dof(contact.nodes[k].first,
+                                        contact.nodes[k].second);
+            if (node != DofSpace<dim>::invalid)
+              for (unsigned int d = 0; d < dim; ++d)
+                gradient[dim * node + d] +=
+                  scale * contact.gradient[dim * (k + 1) + d];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::add_hessian(const Vector<double> &u,
+                                SparseMatrix<double> &hessian) const
+  {
+    for (const ParticleContact &contact : contacts(u, true))
+      {
+        // Chain rule of eq. 29: unknown j of the clique maps to local
+        // coordinate block b(j) with factor c(j) (w_iq for grid nodes, 1
+        // for FEM nodes).
+        const auto stencil = contact_geometry.stencil_nodes(contact.particle);
+        const auto weights = contact_geometry.stencil_weights(contact.particle);
+        std::vector<unsigned int> node, block;
+        std::vector<double>       factor;
+        for (unsigned int i = 0; i < stencil.size(); ++i)
+          {
+            node.push_back(stencil[i]);
+            block.push_back(0);
+            factor.push_back(weights[i]);
+          }
+        for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+          {
+            const unsigned int n =
+              contact_geometry.node_dof(contact.nodes[k].first,
+                                        contact.nodes[k].second);
+            if (n == DofSpace<dim>::invalid)
+              continue;
+            node.push_back(n);
+            block.push_back(k + 1);
+            factor.push_back(1.);
+          }
+        const unsigned int                   n_columns = node.size() * dim;
+        std::vector<types::global_dof_index> columns(n_columns);
+        std::vector<double>                  values(n_columns);
+        for (unsigned int j = 0; j < node.size(); ++j)
+          for (unsigned int d = 0; d < dim; ++d)
+            columns[dim * j + d] = dim * node[j] + d;
+        for (unsigned int i = 0; i < node.size(); ++i)
+          for (unsigned int r = 0; r < dim; ++r)
+            {
+              const unsigned int local_row = dim * block[i] + r;
+              for (unsigned int j = 0; j < node.size(); ++j)
+                for (unsigned int c = 0; c < dim; ++c)
+                  values[dim * j + c] =
+                    scale * factor[i] * factor[j] *
+                    contact.hessian(local_row, dim * block[j] + c);
+              hessian.add(dim * node[i] + r,
+                          n_columns,
+                          columns.data(),
+                          values.data(),
+                          false,
+                          false);
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  BarrierTerm<dim>::step_bound(const Vector<double> &u,
+                               const Vector<double> &p) const
+  {
+    return contact_geometry.time_of_impact(u, p);
+  }
+
+
+
+  template <int dim>
+  void
+  BarrierTerm<dim>::set_obstacle_path(const double from, const double to) const
+  {
+    contact_geometry.set_obstacle_path(from, to);
+  }
+
+
+
+  template <int dim>
+  double
+  BarrierTerm<dim>::minimum_distance(const Vector<double> &u) const
+  {
+    if (contact_geometry.particles_inside(u) > 0)
+      return 0.;
+    return contact_geometry.minimum_distance(u, parameters.activation_distance);
+  }
+
+
+
+  template <int dim>
+  typename BarrierTerm<dim>::Measurement
+  BarrierTerm<dim>::measure(const Vector<double> &u) const
+  {
+    Measurement m;
+    m.minimum_distance = std::numeric_limits<double>::infinity();
+    const auto near =
+      contact_geometry.near_pairs(u, parameters.activation_distance);
+    m.pairs = near.facets.size();
+    for (const ParticleContact &contact : contacts(u, false))
+      {
+        ++m.particles;
+        m.energy += contact.energy;
+        m.minimum_distance = std::min(m.minimum_distance, contact.distance);
+        const unsigned int body =
+          contact_geometry.particle_body(contact.particle);
+        for (const auto &entry : contact.surfaces)
+          m.force[{body, entry.surface}] -= entry.force; // on the FEM body
+      }
+    return m;
+  }
+
+
+
+  template class BarrierTerm<2>;
+  template class BarrierTerm<3>;
+} // namespace bfemp

@@ -1,0 +1,357 @@
+#include <bfemp/base/parallel_sum.h>
+#include <bfemp/contact/distance.h>
+#include <bfemp/contact/friction_mollifier.h>
+#include <bfemp/contact/friction_term.h>
+
+#include <cmath>
+
+namespace bfemp
+{
+  namespace
+  {
+    /** An orthonormal basis of the plane orthogonal to the unit vector n. */
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangent_basis(const Tensor<1, dim> &n)
+    {
+      std::array<Tensor<1, dim>, dim - 1> t;
+      if constexpr (dim == 2)
+        {
+          t[0][0] = -n[1];
+          t[0][1] = n[0];
+        }
+      else
+        {
+          // Start from the axis least aligned with n.
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < 3; ++d)
+            if (std::abs(n[d]) < std::abs(n[axis]))
+              axis = d;
+          Tensor<1, 3> e;
+          e[axis] = 1.;
+          t[0]    = e - (e * n) * n;
+          t[0] /= t[0].norm();
+          t[1] = cross_product_3d(n, t[0]);
+        }
+      return t;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  FrictionTerm<dim>::FrictionTerm(const BarrierTerm<dim>  &barrier,
+                                  const ContactParameters &parameters)
+    : barrier(barrier)
+    , parameters(parameters)
+  {}
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::set_scale(const double s, const double dt)
+  {
+    scale     = s;
+    threshold = parameters.static_friction_velocity * dt;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::clear()
+  {
+    pairs.clear();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FrictionTerm<dim>::n_pairs() const
+  {
+    return static_cast<unsigned int>(pairs.size());
+  }
+
+
+
+  template <int dim>
+  std::string
+  FrictionTerm<dim>::name() const
+  {
+    return "friction";
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::update(const Vector<double> &u)
+  {
+    const ContactGeometry<dim> &geometry = barrier.geometry();
+    const auto                  x        = geometry.surface_positions(u);
+    pairs.clear();
+    for (const auto &contact : barrier.contacts(u, false))
+      {
+        const unsigned int q  = contact.particle;
+        const Point<dim>   xq = geometry.particle_position(q, u);
+        for (const auto &entry : contact.surfaces)
+          {
+            const double mu =
+              parameters.friction_coefficient(geometry.particle_body(q),
+                                              entry.surface);
+            const double lambda = entry.force.norm();
+            if (mu == 0. || lambda == 0.)
+              continue;
+            Pair pair;
+            pair.particle = q;
+            pair.surface  = entry.surface;
+            pair.facet_nodes =
+              geometry.surface(entry.surface).facets()[entry.nearest_facet];
+            const auto &xs = x[entry.surface];
+            if constexpr (dim == 2)
+              {
+                const auto d =
+                  point_edge_squared_distance<2>(xq,
+                                                 xs[pair.facet_nodes[0]],
+                                                 xs[pair.facet_nodes[1]]);
+                pair.weights = {{d.weights[0], d.weights[1]}};
+              }
+            else
+              {
+                const auto d =
+                  point_triangle_squared_distance(xq,
+                                                  xs[pair.facet_nodes[0]],
+                                                  xs[pair.facet_nodes[1]],
+                                                  xs[pair.facet_nodes[2]]);
+                pair.weights = {{d.weights[0], d.weights[1], d.weights[2]}};
+              }
+            Point<dim> nearest;
+            for (unsigned int a = 0; a < dim; ++a)
+              nearest += pair.weights[a] * xs[pair.facet_nodes[a]];
+            // The normal is the direction the barrier pushes in: from the
+            // nearest point to the particle.
+            Tensor<1, dim> normal = xq - nearest;
+            if (normal.norm() == 0.)
+              continue;
+            normal /= normal.norm();
+            pair.basis     = tangent_basis<dim>(normal);
+            pair.mu_lambda = mu * lambda;
+            pairs.push_back(pair);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim - 1>
+  FrictionTerm<dim>::sliding(const Pair &pair, const Vector<double> &u) const
+  {
+    const ContactGeometry<dim> &geometry = barrier.geometry();
+    Tensor<1, dim> relative = geometry.particle_interpolation(pair.particle, u);
+    for (unsigned int a = 0; a < dim; ++a)
+      relative -=
+        pair.weights[a] *
+        geometry.node_displacement(pair.surface, pair.facet_nodes[a], u);
+    Tensor<1, dim - 1> y;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      y[k] = pair.basis[k] * relative;
+    return y;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::stencil(const Pair                &pair,
+                             std::vector<unsigned int> &nodes,
+                             std::vector<double>       &factors) const
+  {
+    const ContactGeometry<dim> &geometry = barrier.geometry();
+    const auto stencil_nodes   = geometry.stencil_nodes(pair.particle);
+    const auto stencil_weights = geometry.stencil_weights(pair.particle);
+    nodes.assign(stencil_nodes.begin(), stencil_nodes.end());
+    factors.assign(stencil_weights.begin(), stencil_weights.end());
+    for (unsigned int a = 0; a < dim; ++a)
+      {
+        const unsigned int node =
+          geometry.node_dof(pair.surface, pair.facet_nodes[a]);
+        if (node == DofSpace<dim>::invalid)
+          continue;
+        nodes.push_back(node);
+        factors.push_back(-pair.weights[a]);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::add_couplings(NodeSparsity &sparsity) const
+  {
+    std::vector<unsigned int> nodes;
+    std::vector<double>       factors;
+    for (const Pair &pair : pairs)
+      {
+        stencil(pair, nodes, factors);
+        sparsity.add_clique(nodes.data(),
+                            static_cast<unsigned int>(nodes.size()));
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  FrictionTerm<dim>::couplings_missing(const Vector<double> &,
+                                       const SparsityPattern &pattern) const
+  {
+    std::vector<unsigned int> nodes;
+    std::vector<double>       factors;
+    for (const Pair &pair : pairs)
+      {
+        stencil(pair, nodes, factors);
+        for (const unsigned int i : nodes)
+          for (const unsigned int j : nodes)
+            if (!pattern.exists(dim * i, dim * j))
+              return true;
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionTerm<dim>::value(const Vector<double> &u) const
+  {
+    const double d =
+      chunked_sum<double>(pairs.size(), [&](const std::size_t k) {
+        return pairs[k].mu_lambda *
+               FrictionMollifier(threshold).f0(sliding(pairs[k], u).norm());
+      });
+    last_magnitude = scale * d;
+    return scale * d;
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionTerm<dim>::magnitude() const
+  {
+    return std::abs(last_magnitude);
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionTerm<dim>::dissipation(const Vector<double> &u) const
+  {
+    double work = 0.;
+    for (const Pair &pair : pairs)
+      {
+        const double y = sliding(pair, u).norm();
+        work += pair.mu_lambda * FrictionMollifier(threshold).f1(y) * y;
+      }
+    return work;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::add_gradient(const Vector<double> &u,
+                                  Vector<double>       &gradient) const
+  {
+    std::vector<unsigned int> nodes;
+    std::vector<double>       factors;
+    for (const Pair &pair : pairs)
+      {
+        const Tensor<1, dim - 1> y = sliding(pair, u);
+        // dD/d(relative displacement) = mu lambda f1(|y|)/|y| T y.
+        const double f1_over_y =
+          FrictionMollifier(threshold).f1_over_y(y.norm());
+        Tensor<1, dim> force;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          force += y[k] * pair.basis[k];
+        force *= scale * pair.mu_lambda * f1_over_y;
+        stencil(pair, nodes, factors);
+        for (unsigned int j = 0; j < nodes.size(); ++j)
+          for (unsigned int d = 0; d < dim; ++d)
+            gradient[dim * nodes[j] + d] += factors[j] * force[d];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::add_hessian(const Vector<double> &u,
+                                 SparseMatrix<double> &hessian) const
+  {
+    std::vector<unsigned int>            nodes;
+    std::vector<double>                  factors;
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (const Pair &pair : pairs)
+      {
+        const Tensor<1, dim - 1> y    = sliding(pair, u);
+        const double             norm = y.norm();
+        // M = f1/y (I - yy^T/|y|^2) + f1' yy^T/|y|^2 in the tangent plane;
+        // both coefficients are >= 0, so M is PSD. (Written this way, not
+        // as f1/y I + (f1/y)'/y yy^T, so that f1' = 0 of kinetic sliding
+        // comes out exactly 0, not as a round-off difference.)
+        const FrictionMollifier mollifier(threshold);
+        const double            f1_over_y = mollifier.f1_over_y(norm);
+        const double            f1_prime =
+          f1_over_y + mollifier.f1_derivative_minus_f1_over_y(norm);
+        Tensor<2, dim - 1> M;
+        if (dim == 2)
+          M[0][0] = f1_prime;
+        else
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            {
+              M[a][a] = f1_over_y;
+              for (unsigned int b = 0; b < dim - 1; ++b)
+                if (norm > 0.)
+                  M[a][b] +=
+                    (f1_prime - f1_over_y) * y[a] * y[b] / (norm * norm);
+            }
+        Tensor<2, dim> block;
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          for (unsigned int b = 0; b < dim - 1; ++b)
+            block += M[a][b] * outer_product(pair.basis[a], pair.basis[b]);
+        block *= scale * pair.mu_lambda;
+
+        stencil(pair, nodes, factors);
+        const unsigned int n_columns = dim * nodes.size();
+        columns.resize(n_columns);
+        values.resize(n_columns);
+        for (unsigned int j = 0; j < nodes.size(); ++j)
+          for (unsigned int d = 0; d < dim; ++d)
+            columns[dim * j + d] = dim * nodes[j] + d;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          for (unsigned int r = 0; r < dim; ++r)
+            {
+              for (unsigned int j = 0; j < nodes.size(); ++j)
+                for (unsigned int c = 0; c < dim; ++c)
+                  values[dim * j + c] = factors[i] * factors[j] * block[r][c];
+              hessian.add(dim * nodes[i] + r,
+                          n_columns,
+                          columns.data(),
+                          values.data(),
+                          false,
+                          false);
+            }
+      }
+  }
+
+
+
+  template class FrictionTerm<2>;
+  template class FrictionTerm<3>;
+} // namespace bfemp
