@@ -271,19 +271,41 @@ namespace bfemp
     std::vector<double>       factors;
     for (const Pair &pair : pairs)
       {
-        const Tensor<1, dim - 1> y = sliding(pair, u);
-        // dD/d(relative displacement) = mu lambda f1(|y|)/|y| T y.
-        const double f1_over_y =
-          FrictionMollifier(threshold).f1_over_y(y.norm());
-        Tensor<1, dim> force;
-        for (unsigned int k = 0; k < dim - 1; ++k)
-          force += y[k] * pair.basis[k];
-        force *= scale * pair.mu_lambda * f1_over_y;
+        const Tensor<1, dim> force = scale * particle_force(pair, u);
         stencil(pair, nodes, factors);
         for (unsigned int j = 0; j < nodes.size(); ++j)
           for (unsigned int d = 0; d < dim; ++d)
             gradient[dim * nodes[j] + d] += factors[j] * force[d];
       }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  FrictionTerm<dim>::particle_force(const Pair           &pair,
+                                    const Vector<double> &u) const
+  {
+    // dD/d(relative displacement) = mu lambda f1(|y|)/|y| T y.
+    const Tensor<1, dim - 1> y = sliding(pair, u);
+    Tensor<1, dim>           force;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      force += y[k] * pair.basis[k];
+    return pair.mu_lambda * FrictionMollifier(threshold).f1_over_y(y.norm()) *
+           force;
+  }
+
+
+
+  template <int dim>
+  std::map<std::pair<unsigned int, unsigned int>, Tensor<1, dim>>
+  FrictionTerm<dim>::forces(const Vector<double> &u) const
+  {
+    std::map<std::pair<unsigned int, unsigned int>, Tensor<1, dim>> result;
+    for (const Pair &pair : pairs)
+      result[{barrier.geometry().particle_body(pair.particle), pair.surface}] +=
+        particle_force(pair, u);
+    return result;
   }
 
 

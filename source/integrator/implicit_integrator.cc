@@ -376,6 +376,8 @@ namespace bfemp
         last_contact.friction_pairs   = friction->n_pairs();
         last_contact.step_dissipation = friction->dissipation(u);
         last_contact.accumulated_dissipation += last_contact.step_dissipation;
+        for (const auto &[bodies, force] : friction->forces(u))
+          last_contact.force[bodies] += force;
       }
   }
 

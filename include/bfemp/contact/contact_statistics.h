@@ -30,7 +30,10 @@ namespace bfemp
     /** Friction work of the last step and summed since the start [J]. */
     double step_dissipation        = 0.;
     double accumulated_dissipation = 0.;
-    /** Barrier force on FEM body f from MPM body m, keyed (m, f) [N]. */
+    /**
+     * Contact force (barrier and friction) on FEM body f from MPM body m,
+     * keyed (m, f) [N].
+     */
     std::map<std::pair<unsigned int, unsigned int>, Tensor<1, dim>> force;
   };
 } // namespace bfemp

@@ -6,6 +6,8 @@
 #include <bfemp/solver/energy_term.h>
 
 #include <array>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace bfemp
@@ -62,6 +64,13 @@ namespace bfemp
     double
     dissipation(const Vector<double> &u) const;
 
+    /**
+     * The friction force on FEM body f from MPM body m at u, keyed (m, f):
+     * the reaction of -dD/dx_q (unscaled) over the pairs [N].
+     */
+    std::map<std::pair<unsigned int, unsigned int>, Tensor<1, dim>>
+    forces(const Vector<double> &u) const;
+
     std::string
     name() const override;
 
@@ -96,6 +105,10 @@ namespace bfemp
       std::array<Tensor<1, dim>, dim - 1> basis;
       double                              mu_lambda;
     };
+
+    /** mu lambda f1(|y|)/|y| T y: the force the pair's particle exerts. */
+    Tensor<1, dim>
+    particle_force(const Pair &pair, const Vector<double> &u) const;
 
     /** T^T (Delta x_q - sum beta_a Delta x_a) of pair @p k at u. */
     Tensor<1, dim - 1>
