@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace bfemp
 {
@@ -366,27 +367,46 @@ namespace bfemp
 
   template <int dim>
   bool
-  BarrierTerm<dim>::couplings_missing(const Vector<double>  &u,
-                                      const SparsityPattern &pattern) const
+  BarrierTerm<dim>::register_couplings(
+    const unsigned int               particle,
+    const std::vector<unsigned int> &fem_nodes) const
   {
-    bool missing = false;
-    for (const ParticleContact &contact : contacts(u, false))
+    auto &list  = registered[particle];
+    bool  added = false;
+    for (const unsigned int node : fem_nodes)
+      if (node != DofSpace<dim>::invalid &&
+          !std::binary_search(list.begin(), list.end(), node))
+        {
+          list.insert(std::upper_bound(list.begin(), list.end(), node), node);
+          added = true;
+        }
+    return added;
+  }
+
+
+
+  template <int dim>
+  bool
+  BarrierTerm<dim>::couplings_missing(const Vector<double> &u,
+                                      const SparsityPattern &) const
+  {
+    // The pattern holds every registered clique (a registration that adds
+    // something makes the potential rebuild it), so comparing with the
+    // registry is enough.
+    const auto near =
+      contact_geometry.near_pairs(u, parameters.activation_distance);
+    bool                      missing = false;
+    std::vector<unsigned int> nodes;
+    for (unsigned int k = 0; k < near.size(); ++k)
       {
-        const std::vector<unsigned int> nodes = clique(contact);
-        bool                            found = true;
-        for (const unsigned int i : nodes)
-          for (const unsigned int j : nodes)
-            if (found && !pattern.exists(dim * i, dim * j))
-              found = false;
-        if (found)
-          continue;
-        missing         = true;
-        auto      &list = registered[contact.particle];
-        const auto stencil_size =
-          contact_geometry.stencil_nodes(contact.particle).size();
-        list.insert(list.end(), nodes.begin() + stencil_size, nodes.end());
-        std::sort(list.begin(), list.end());
-        list.erase(std::unique(list.begin(), list.end()), list.end());
+        nodes.clear();
+        for (unsigned int j = near.offsets[k]; j < near.offsets[k + 1]; ++j)
+          for (const unsigned int a :
+               contact_geometry.surface(near.facets[j].surface)
+                 .facets()[near.facets[j].facet])
+            nodes.push_back(
+              contact_geometry.node_dof(near.facets[j].surface, a));
+        missing = register_couplings(near.particles[k], nodes) || missing;
       }
     return missing;
   }
@@ -479,12 +499,20 @@ namespace bfemp
             block.push_back(k + 1);
             factor.push_back(1.);
           }
+        // Columns in increasing order, as SparseMatrix::add is fastest with.
+        std::vector<unsigned int> order(node.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int a, const unsigned int b) {
+                    return node[a] < node[b];
+                  });
         const unsigned int                   n_columns = node.size() * dim;
         std::vector<types::global_dof_index> columns(n_columns);
         std::vector<double>                  values(n_columns);
         for (unsigned int j = 0; j < node.size(); ++j)
           for (unsigned int d = 0; d < dim; ++d)
-            columns[dim * j + d] = dim * node[j] + d;
+            columns[dim * j + d] = dim * node[order[j]] + d;
         for (unsigned int i = 0; i < node.size(); ++i)
           for (unsigned int r = 0; r < dim; ++r)
             {
@@ -492,14 +520,14 @@ namespace bfemp
               for (unsigned int j = 0; j < node.size(); ++j)
                 for (unsigned int c = 0; c < dim; ++c)
                   values[dim * j + c] =
-                    scale * factor[i] * factor[j] *
-                    contact.hessian(local_row, dim * block[j] + c);
+                    scale * factor[i] * factor[order[j]] *
+                    contact.hessian(local_row, dim * block[order[j]] + c);
               hessian.add(dim * node[i] + r,
                           n_columns,
                           columns.data(),
                           values.data(),
                           false,
-                          false);
+                          true);
             }
       }
   }

@@ -7,6 +7,7 @@
 #include <bfemp/particles/particle_layout.h>
 
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/parallel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -175,6 +176,7 @@ namespace bfemp
           }
       }
     progress_from = progress_to = 0.;
+    cache.valid                 = false;
   }
 
 
@@ -369,6 +371,12 @@ namespace bfemp
   ContactGeometry<dim>::near_pairs(const Vector<double> &u,
                                    const double          distance) const
   {
+    // Value, gradient, Hessian and coupling checks ask at the same u in
+    // turn; the last answer is kept.
+    if (cache.valid && cache.distance == distance &&
+        cache.progress == progress_from && cache.u == u)
+      return cache.near;
+
     const auto                    x = surface_positions(u);
     std::vector<FacetReference>   references;
     std::vector<BoundingBox<dim>> boxes;
@@ -382,38 +390,68 @@ namespace bfemp
           boxes.push_back(inflated(box, distance));
           references.push_back({s, f});
         }
-    if (boxes.empty() || start_positions.empty())
-      return NearPairs();
-    BoundingBox<dim> everything = boxes[0];
-    for (const auto &b : boxes)
-      everything.merge_with(b);
-    const SpatialHash<dim> hash(boxes);
-    const double           distance_squared = distance * distance;
+    NearPairs result;
+    if (!boxes.empty() && !start_positions.empty())
+      {
+        BoundingBox<dim> everything = boxes[0];
+        for (const auto &b : boxes)
+          everything.merge_with(b);
+        // |x_q(u) - x_q^n| <= sqrt(dim) max |u_i| (weights >= 0, sum <= 1):
+        // particles whose start is farther from every facet skip the
+        // interpolation.
+        const BoundingBox<dim> reachable =
+          inflated(everything, std::sqrt(1. * dim) * u.linfty_norm());
+        const SpatialHash<dim> hash(boxes);
+        const double           distance_squared = distance * distance;
 
-    return chunked_sum<
-      NearPairs>(start_positions.size(), [&](const std::size_t i) {
-      NearPairs          near;
-      const unsigned int q  = static_cast<unsigned int>(i);
-      const Point<dim>   xq = particle_position(q, u);
-      if (!inside(everything, xq))
-        return near;
-      thread_local std::vector<unsigned int> candidates;
-      hash.query(box_of(xq), candidates);
-      for (const unsigned int c : candidates)
-        {
-          const FacetReference &r = references[c];
-          if (facet_squared_distance<dim>(xq,
-                                          surfaces[r.surface].facets()[r.facet],
-                                          x[r.surface]) < distance_squared)
-            near.facets.push_back(r);
-        }
-      if (!near.facets.empty())
-        {
-          near.particles.push_back(q);
-          near.offsets.push_back(static_cast<unsigned int>(near.facets.size()));
-        }
-      return near;
-    });
+        constexpr std::size_t  chunk = 1024;
+        const std::size_t      n     = start_positions.size();
+        std::vector<NearPairs> partial((n + chunk - 1) / chunk);
+        parallel::apply_to_subranges(
+          std::size_t(0),
+          partial.size(),
+          [&](const std::size_t begin, const std::size_t end) {
+            std::vector<unsigned int> candidates;
+            for (std::size_t c = begin; c < end; ++c)
+              for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk);
+                   ++i)
+                {
+                  const unsigned int q = static_cast<unsigned int>(i);
+                  if (!inside(reachable, start_positions[q]))
+                    continue;
+                  const Point<dim> xq = particle_position(q, u);
+                  if (!inside(everything, xq))
+                    continue;
+                  hash.query(box_of(xq), candidates);
+                  NearPairs &near  = partial[c];
+                  const auto first = near.facets.size();
+                  for (const unsigned int k : candidates)
+                    {
+                      const FacetReference &r = references[k];
+                      if (facet_squared_distance<dim>(
+                            xq,
+                            surfaces[r.surface].facets()[r.facet],
+                            x[r.surface]) < distance_squared)
+                        near.facets.push_back(r);
+                    }
+                  if (near.facets.size() > first)
+                    {
+                      near.particles.push_back(q);
+                      near.offsets.push_back(
+                        static_cast<unsigned int>(near.facets.size()));
+                    }
+                }
+          },
+          1);
+        for (const NearPairs &p : partial)
+          result += p;
+      }
+    cache.valid    = true;
+    cache.distance = distance;
+    cache.progress = progress_from;
+    cache.u        = u;
+    cache.near     = result;
+    return result;
   }
 
 

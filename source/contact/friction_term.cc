@@ -3,7 +3,9 @@
 #include <bfemp/contact/friction_mollifier.h>
 #include <bfemp/contact/friction_term.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace bfemp
 {
@@ -139,6 +141,11 @@ namespace bfemp
             pair.basis     = tangent_basis<dim>(normal);
             pair.mu_lambda = mu * lambda;
             pairs.push_back(pair);
+            std::vector<unsigned int> fem_nodes;
+            for (const unsigned int a : pair.facet_nodes)
+              fem_nodes.push_back(geometry.node_dof(pair.surface, a));
+            couplings_grew =
+              barrier.register_couplings(q, fem_nodes) || couplings_grew;
           }
       }
   }
@@ -189,16 +196,9 @@ namespace bfemp
 
   template <int dim>
   void
-  FrictionTerm<dim>::add_couplings(NodeSparsity &sparsity) const
+  FrictionTerm<dim>::add_couplings(NodeSparsity &) const
   {
-    std::vector<unsigned int> nodes;
-    std::vector<double>       factors;
-    for (const Pair &pair : pairs)
-      {
-        stencil(pair, nodes, factors);
-        sparsity.add_clique(nodes.data(),
-                            static_cast<unsigned int>(nodes.size()));
-      }
+    // The barrier term adds the cliques of every registered pair.
   }
 
 
@@ -206,19 +206,11 @@ namespace bfemp
   template <int dim>
   bool
   FrictionTerm<dim>::couplings_missing(const Vector<double> &,
-                                       const SparsityPattern &pattern) const
+                                       const SparsityPattern &) const
   {
-    std::vector<unsigned int> nodes;
-    std::vector<double>       factors;
-    for (const Pair &pair : pairs)
-      {
-        stencil(pair, nodes, factors);
-        for (const unsigned int i : nodes)
-          for (const unsigned int j : nodes)
-            if (!pattern.exists(dim * i, dim * j))
-              return true;
-      }
-    return false;
+    const bool missing = couplings_grew;
+    couplings_grew     = false;
+    return missing;
   }
 
 
@@ -319,6 +311,7 @@ namespace bfemp
     std::vector<double>                  factors;
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
+    std::vector<unsigned int>            order;
     for (const Pair &pair : pairs)
       {
         const Tensor<1, dim - 1> y    = sliding(pair, u);
@@ -350,24 +343,33 @@ namespace bfemp
         block *= scale * pair.mu_lambda;
 
         stencil(pair, nodes, factors);
+        // Columns in increasing order, as SparseMatrix::add is fastest with.
+        order.resize(nodes.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned a, const unsigned b) {
+                    return nodes[a] < nodes[b];
+                  });
         const unsigned int n_columns = dim * nodes.size();
         columns.resize(n_columns);
         values.resize(n_columns);
         for (unsigned int j = 0; j < nodes.size(); ++j)
           for (unsigned int d = 0; d < dim; ++d)
-            columns[dim * j + d] = dim * nodes[j] + d;
+            columns[dim * j + d] = dim * nodes[order[j]] + d;
         for (unsigned int i = 0; i < nodes.size(); ++i)
           for (unsigned int r = 0; r < dim; ++r)
             {
               for (unsigned int j = 0; j < nodes.size(); ++j)
                 for (unsigned int c = 0; c < dim; ++c)
-                  values[dim * j + c] = factors[i] * factors[j] * block[r][c];
+                  values[dim * j + c] =
+                    factors[i] * factors[order[j]] * block[r][c];
               hessian.add(dim * nodes[i] + r,
                           n_columns,
                           columns.data(),
                           values.data(),
                           false,
-                          false);
+                          true);
             }
       }
   }

@@ -159,12 +159,14 @@ namespace
   /** The assembled Hessian of @p term at u as a dense matrix. */
   template <int dim>
   FullMatrix<double>
-  assembled_hessian(const EnergyTerm<dim> &term,
-                    const DofSpace<dim>   &dofs,
-                    const Vector<double>  &u)
+  assembled_hessian(const EnergyTerm<dim>  &term,
+                    const BarrierTerm<dim> &registry,
+                    const DofSpace<dim>    &dofs,
+                    const Vector<double>   &u)
   {
+    // The barrier term holds the couplings of barrier and friction pairs.
     NodeSparsity sparsity(dofs.n_nodes());
-    term.add_couplings(sparsity);
+    registry.add_couplings(sparsity);
     SparsityPattern pattern;
     sparsity.build(dim, pattern);
     SparseMatrix<double> matrix(pattern);
@@ -221,14 +223,14 @@ namespace
 
     barrier.set_hessian_projection(false);
     const FullMatrix<double> raw =
-      assembled_hessian<dim>(barrier, scene.dofs, u);
+      assembled_hessian<dim>(barrier, barrier, scene.dofs, u);
     report<dim>(
       "barrier Hessian (raw)",
       relative_difference(raw, finite_difference_hessian(gradient, u, 1e-8)),
       1e-5);
     barrier.set_hessian_projection(true);
     const FullMatrix<double> projected =
-      assembled_hessian<dim>(barrier, scene.dofs, u);
+      assembled_hessian<dim>(barrier, barrier, scene.dofs, u);
     const auto range = eigenvalue_range(projected);
     report<dim>("projected barrier Hessian PSD",
                 std::max(0., -range.first / range.second),
@@ -267,7 +269,7 @@ namespace
                       finite_difference_gradient(f_value, v, 1e-3 * sliding)),
                     1e-5);
         const FullMatrix<double> hf =
-          assembled_hessian<dim>(friction, scene.dofs, v);
+          assembled_hessian<dim>(friction, barrier, scene.dofs, v);
         // In 2D kinetic friction has a zero Hessian (f1' = 0): measure the
         // error against the natural scale |grad D| / |sliding| as well.
         const FullMatrix<double> fd =

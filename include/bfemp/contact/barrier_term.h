@@ -140,6 +140,16 @@ namespace bfemp
     Measurement
     measure(const Vector<double> &u) const;
 
+    /**
+     * Records that the Hessian couples @p particle's stencil with the FEM
+     * unknowns @p fem_nodes (invalid entries are skipped); returns true if
+     * that is new, so the pattern must grow. Friction registers its pairs
+     * here too: one registry for all contact couplings.
+     */
+    bool
+    register_couplings(const unsigned int               particle,
+                       const std::vector<unsigned int> &fem_nodes) const;
+
     const ContactGeometry<dim> &
     geometry() const;
 

@@ -203,6 +203,17 @@ namespace bfemp
     double                               progress_to   = 0.;
 
     mutable unsigned long ccd_queries = 0;
+
+    /** The last near_pairs() answer and what it was asked. */
+    struct NearPairsCache
+    {
+      bool           valid    = false;
+      double         distance = 0.;
+      double         progress = 0.;
+      Vector<double> u;
+      NearPairs      near;
+    };
+    mutable NearPairsCache cache;
   };
 } // namespace bfemp
 

@@ -126,6 +126,8 @@ namespace bfemp
     double                   threshold = 1.;
     std::vector<Pair>        pairs;
     mutable double           last_magnitude = 0.;
+    /** A friction pair's clique was new to the barrier's registry. */
+    mutable bool couplings_grew = false;
   };
 } // namespace bfemp
 
