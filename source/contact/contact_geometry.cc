@@ -488,6 +488,11 @@ namespace bfemp
     BoundingBox<dim> everything = boxes[0];
     for (const auto &b : boxes)
       everything.merge_with(b);
+    // A particle's path from x_q(u) to x_q(u + p) stays within
+    // sqrt(dim) (|u|_inf + |p|_inf) of its start (as in near_pairs).
+    const BoundingBox<dim> reachable =
+      inflated(everything,
+               std::sqrt(1. * dim) * (u.linfty_norm() + p.linfty_norm()));
     const SpatialHash<dim> hash(boxes);
 
     struct Result
@@ -504,8 +509,10 @@ namespace bfemp
     };
     const Result result =
       chunked_sum<Result>(start_positions.size(), [&](const std::size_t i) {
-        Result                 r;
-        const unsigned int     q   = static_cast<unsigned int>(i);
+        Result             r;
+        const unsigned int q = static_cast<unsigned int>(i);
+        if (!inside(reachable, start_positions[q]))
+          return r;
         const Point<dim>       xq  = particle_position(q, u);
         const Tensor<1, dim>   dxq = particle_interpolation(q, p);
         const BoundingBox<dim> box = swept_point_box<dim>(xq, dxq);
