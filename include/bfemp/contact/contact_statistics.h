@@ -3,6 +3,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -21,7 +22,7 @@ namespace bfemp
     /** Particles within dhat of some facet. */
     unsigned int particles = 0;
     /** Smallest particle-facet distance among those (+inf if none). */
-    double minimum_distance = 0.;
+    double minimum_distance = std::numeric_limits<double>::infinity();
     /** B of eqs. 31/32 (not scaled by the step) [J]. */
     double       barrier_energy     = 0.;
     unsigned int friction_pairs     = 0;
