@@ -274,17 +274,6 @@ namespace
     return items;
   }
 
-  /** A finite number, or null (JSON has no inf/NaN). */
-  std::string
-  json_number(const double x)
-  {
-    if (!std::isfinite(x))
-      return "null";
-    std::ostringstream s;
-    s << std::setprecision(6) << x;
-    return s.str();
-  }
-
   // ------------------------------------------------------------------------
   // Timing.
 

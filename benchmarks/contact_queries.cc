@@ -95,17 +95,6 @@ namespace
     std::string  output;
   };
 
-  /** A finite number, or null (JSON has no inf/NaN). */
-  std::string
-  json_number(const double x)
-  {
-    if (!std::isfinite(x))
-      return "null";
-    std::ostringstream s;
-    s << std::setprecision(6) << x;
-    return s.str();
-  }
-
   // ------------------------------------------------------------------------
   // Random numbers (seeded, so every run times the same configurations).
 

@@ -6,13 +6,16 @@
 // by explicit_throughput.cc and implicit_newton.cc.
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 #include <sys/resource.h>
 
@@ -116,6 +119,17 @@ namespace machine_info
   {
     const char *value = std::getenv(name);
     return value ? value : "";
+  }
+
+  /** A finite number, or null (JSON has no inf/NaN). */
+  inline std::string
+  json_number(const double x)
+  {
+    if (!std::isfinite(x))
+      return "null";
+    std::ostringstream s;
+    s << std::setprecision(6) << x;
+    return s.str();
   }
 
   /** "release" (NDEBUG, deal.II's optimized library) or "debug". */

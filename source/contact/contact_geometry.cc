@@ -40,16 +40,6 @@ namespace bfemp
       return box;
     }
 
-    template <int dim>
-    bool
-    inside(const BoundingBox<dim> &box, const Point<dim> &x)
-    {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (x[d] < box.lower_bound(d) || x[d] > box.upper_bound(d))
-          return false;
-      return true;
-    }
-
     /** Squared distance of x to facet f with node positions x_nodes. */
     template <int dim>
     double
@@ -417,10 +407,10 @@ namespace bfemp
                    ++i)
                 {
                   const unsigned int q = static_cast<unsigned int>(i);
-                  if (!inside(reachable, start_positions[q]))
+                  if (!reachable.point_inside(start_positions[q]))
                     continue;
                   const Point<dim> xq = particle_position(q, u);
-                  if (!inside(everything, xq))
+                  if (!everything.point_inside(xq))
                     continue;
                   hash.query(box_of(xq), candidates);
                   NearPairs &near  = partial[c];
@@ -511,7 +501,7 @@ namespace bfemp
       chunked_sum<Result>(start_positions.size(), [&](const std::size_t i) {
         Result             r;
         const unsigned int q = static_cast<unsigned int>(i);
-        if (!inside(reachable, start_positions[q]))
+        if (!reachable.point_inside(start_positions[q]))
           return r;
         const Point<dim>       xq  = particle_position(q, u);
         const Tensor<1, dim>   dxq = particle_interpolation(q, p);
