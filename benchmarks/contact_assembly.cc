@@ -104,6 +104,7 @@
 #include <bfemp/transfer/particle_grid_transfer.h>
 
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -256,22 +257,6 @@ namespace
     add("far_2d", 2, false, {1000}, {2, 8, 32, 128, 256}, "far");
     add("far_3d", 3, false, {20}, {2, 8, 32, 128}, "far");
     return scenes;
-  }
-
-  std::vector<std::string>
-  split_list(const std::string &text)
-  {
-    std::vector<std::string> items;
-    std::stringstream        in(text);
-    std::string              item;
-    while (std::getline(in, item, ','))
-      {
-        item.erase(0, item.find_first_not_of(' '));
-        item.erase(item.find_last_not_of(' ') + 1);
-        if (!item.empty())
-          items.push_back(item);
-      }
-    return items;
   }
 
   // ------------------------------------------------------------------------
@@ -1028,13 +1013,16 @@ main(int argc, char **argv)
           else if (arg == "--threads" && has_arg)
             options.threads = std::max(1, std::atoi(argv[++i]));
           else if (arg == "--series" && has_arg)
-            for (const std::string &name : split_list(argv[++i]))
+            for (const std::string &name :
+                 Utilities::split_string_list(argv[++i], ','))
               options.series.insert(name);
           else if (arg == "--size" && has_arg)
-            for (const std::string &index : split_list(argv[++i]))
+            for (const std::string &index :
+                 Utilities::split_string_list(argv[++i], ','))
               options.sizes.insert(std::stoi(index));
           else if (arg == "--phases" && has_arg)
-            for (const std::string &name : split_list(argv[++i]))
+            for (const std::string &name :
+                 Utilities::split_string_list(argv[++i], ','))
               {
                 if (std::find(phase_names.begin(), phase_names.end(), name) ==
                     phase_names.end())

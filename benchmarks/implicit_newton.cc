@@ -81,6 +81,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cctype>
@@ -189,22 +190,6 @@ namespace
     std::set<unsigned int>   sizes;
     std::vector<std::string> solvers = all_solvers;
   };
-
-  std::vector<std::string>
-  split_list(const std::string &text)
-  {
-    std::vector<std::string> items;
-    std::stringstream        in(text);
-    std::string              item;
-    while (std::getline(in, item, ','))
-      {
-        item.erase(0, item.find_first_not_of(' '));
-        item.erase(item.find_last_not_of(' ') + 1);
-        if (!item.empty())
-          items.push_back(item);
-      }
-    return items;
-  }
 
   std::string
   solver_from_argument(std::string name)
@@ -1029,15 +1014,18 @@ main(int argc, char **argv)
           else if (arg == "--max-umfpack-factorization" && has_arg)
             options.max_umfpack_factor = std::atof(argv[++i]);
           else if (arg == "--case" && has_arg)
-            for (const std::string &name : split_list(argv[++i]))
+            for (const std::string &name :
+                 Utilities::split_string_list(argv[++i], ','))
               options.cases.insert(name);
           else if (arg == "--size" && has_arg)
-            for (const std::string &index : split_list(argv[++i]))
+            for (const std::string &index :
+                 Utilities::split_string_list(argv[++i], ','))
               options.sizes.insert(std::stoi(index));
           else if (arg == "--solver" && has_arg)
             {
               options.solvers.clear();
-              for (const std::string &name : split_list(argv[++i]))
+              for (const std::string &name :
+                   Utilities::split_string_list(argv[++i], ','))
                 options.solvers.push_back(solver_from_argument(name));
             }
           else

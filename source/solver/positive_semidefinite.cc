@@ -42,26 +42,27 @@ namespace bfemp
               if (a(p, r) == 0.)
                 continue;
               const double theta = (a(r, r) - a(p, p)) / (2. * a(p, r));
-              const double t = (theta >= 0. ? 1. : -1.) /
-                               (std::abs(theta) + std::sqrt(theta * theta + 1.));
+              const double t =
+                (theta >= 0. ? 1. : -1.) /
+                (std::abs(theta) + std::sqrt(theta * theta + 1.));
               const double c = 1. / std::sqrt(t * t + 1.), s = t * c;
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const double akp = a(k, p), akr = a(k, r);
-                  a(k, p)          = c * akp - s * akr;
-                  a(k, r)          = s * akp + c * akr;
+                  a(k, p) = c * akp - s * akr;
+                  a(k, r) = s * akp + c * akr;
                 }
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const double apk = a(p, k), ark = a(r, k);
-                  a(p, k)          = c * apk - s * ark;
-                  a(r, k)          = s * apk + c * ark;
+                  a(p, k) = c * apk - s * ark;
+                  a(r, k) = s * apk + c * ark;
                 }
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const double qkp = q(k, p), qkr = q(k, r);
-                  q(k, p)          = c * qkp - s * qkr;
-                  q(k, r)          = s * qkp + c * qkr;
+                  q(k, p) = c * qkp - s * qkr;
+                  q(k, r) = s * qkp + c * qkr;
                 }
             }
       }

@@ -117,33 +117,25 @@ namespace
   simulate(const std::string &file)
   {
     using Layout = bfemp::ParticleLayout<2>;
-    bfemp::SceneParameters<2> parameters;
-    parameters.read(file);
-    std::ostringstream   console;
-    bfemp::Simulation<2> simulation(parameters, file, console);
-    End                  end;
-    try
-      {
-        simulation.run();
-      }
-    catch (const bfemp::SimulationError &error)
-      {
-        end.error = error.what();
-      }
-    for (const auto &particle : simulation.particles().handler())
-      {
-        const auto properties = particle.get_properties();
-        ++end.n_particles;
-        end.mpm_mass += properties[Layout::mass];
-        end.mpm_momentum += properties[Layout::mass] *
-                            Layout::get_vector(properties, Layout::velocity);
-      }
-    const auto &ring = *simulation.fem_bodies()[0];
-    for (unsigned int a = 0; a < ring.n_nodes(); ++a)
-      {
-        end.fem_mass += ring.masses()[a];
-        end.fem_momentum += ring.masses()[a] * ring.velocities()[a];
-      }
+    End end;
+    end.error =
+      implicit_scene::run<2>(file, {}, [&](bfemp::Simulation<2> &simulation) {
+        for (const auto &particle : simulation.particles().handler())
+          {
+            const auto properties = particle.get_properties();
+            ++end.n_particles;
+            end.mpm_mass += properties[Layout::mass];
+            end.mpm_momentum +=
+              properties[Layout::mass] *
+              Layout::get_vector(properties, Layout::velocity);
+          }
+        const auto &ring = *simulation.fem_bodies()[0];
+        for (unsigned int a = 0; a < ring.n_nodes(); ++a)
+          {
+            end.fem_mass += ring.masses()[a];
+            end.fem_momentum += ring.masses()[a] * ring.velocities()[a];
+          }
+      }).error;
     return end;
   }
 

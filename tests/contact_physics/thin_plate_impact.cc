@@ -148,37 +148,29 @@ namespace
   simulate(const std::string &file)
   {
     using Layout = bfemp::ParticleLayout<2>;
-    bfemp::SceneParameters<2> parameters;
-    parameters.read(file);
-    std::ostringstream   console;
-    bfemp::Simulation<2> simulation(parameters, file, console);
-    End                  end;
-    try
-      {
-        simulation.run();
-      }
-    catch (const bfemp::SimulationError &error)
-      {
-        end.error = error.what();
-      }
-    for (const auto &particle : simulation.particles().handler())
-      {
-        const auto properties = particle.get_properties();
-        end.particles.push_back(particle.get_location());
-        end.block_mass += properties[Layout::mass];
-        end.block_momentum += properties[Layout::mass] *
-                              Layout::get_vector(properties, Layout::velocity);
-      }
-    const auto &plate  = *simulation.fem_bodies()[0];
-    end.nodes          = plate.positions();
-    end.rest           = plate.mesh().rest_positions();
-    end.masses         = plate.masses();
-    end.velocities     = plate.velocities();
-    const auto &facets = plate.mesh().boundary_facets();
-    const auto &ids    = plate.mesh().boundary_facet_ids();
-    for (unsigned int f = 0; f < facets.size(); ++f)
-      if (ids[f] == top_face)
-        end.top_facets.push_back({{facets[f][0], facets[f][1]}});
+    End end;
+    end.error =
+      implicit_scene::run<2>(file, {}, [&](bfemp::Simulation<2> &simulation) {
+        for (const auto &particle : simulation.particles().handler())
+          {
+            const auto properties = particle.get_properties();
+            end.particles.push_back(particle.get_location());
+            end.block_mass += properties[Layout::mass];
+            end.block_momentum +=
+              properties[Layout::mass] *
+              Layout::get_vector(properties, Layout::velocity);
+          }
+        const auto &plate  = *simulation.fem_bodies()[0];
+        end.nodes          = plate.positions();
+        end.rest           = plate.mesh().rest_positions();
+        end.masses         = plate.masses();
+        end.velocities     = plate.velocities();
+        const auto &facets = plate.mesh().boundary_facets();
+        const auto &ids    = plate.mesh().boundary_facet_ids();
+        for (unsigned int f = 0; f < facets.size(); ++f)
+          if (ids[f] == top_face)
+            end.top_facets.push_back({{facets[f][0], facets[f][1]}});
+      }).error;
     return end;
   }
 

@@ -140,13 +140,15 @@ namespace implicit_scene
 
   /**
    * Reads the scene @p file, lets @p set_up change the initial state (may
-   * be empty), runs it and returns its end state. A SimulationError is
+   * be empty), runs it, lets @p inspect read the end state (may be empty)
+   * and returns the end state. A SimulationError is
    * caught and returned as Outcome::error; anything else fails the test.
    */
   template <int dim>
   Outcome<dim>
   run(const std::string                                   &file,
-      const std::function<void(bfemp::Simulation<dim> &)> &set_up = {})
+      const std::function<void(bfemp::Simulation<dim> &)> &set_up  = {},
+      const std::function<void(bfemp::Simulation<dim> &)> &inspect = {})
   {
     bfemp::SceneParameters<dim> parameters;
     parameters.read(file);
@@ -172,6 +174,8 @@ namespace implicit_scene
         outcome.fem_masses.push_back(body->masses());
       }
     outcome.diagnostics = simulation.diagnostics();
+    if (inspect)
+      inspect(simulation);
     return outcome;
   }
 

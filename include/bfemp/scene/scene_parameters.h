@@ -3,13 +3,13 @@
 
 #include <bfemp/base/run_parameters.h>
 #include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/contact/contact_parameters.h>
 #include <bfemp/fem/fem_body_parameters.h>
 #include <bfemp/grid/grid_parameters.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/io/output_parameters.h>
 #include <bfemp/particles/body_parameters.h>
 #include <bfemp/solver/solver_parameters.h>
-#include <bfemp/contact/contact_parameters.h>
 #include <bfemp/transfer/transfer_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
