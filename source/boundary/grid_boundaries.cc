@@ -139,7 +139,7 @@ namespace bfemp
       if (level_set.value(x, time) <= 0.)
         f(level_set.condition(),
           level_set.normal(x, time),
-          level_set.velocity());
+          level_set.velocity(time));
   }
 
 
@@ -249,6 +249,28 @@ namespace bfemp
     return !level_sets.empty() ||
            std::find(wall_active.begin(), wall_active.end(), true) !=
              wall_active.end();
+  }
+
+
+
+  template <int dim>
+  bool
+  GridBoundaries<dim>::has_level_sets() const
+  {
+    return !level_sets.empty();
+  }
+
+
+
+  template <int dim>
+  bool
+  GridBoundaries<dim>::inside_level_set(const Point<dim> &x,
+                                        const double      time) const
+  {
+    for (const LevelSet<dim> &level_set : level_sets)
+      if (level_set.value(x, time) < 0.)
+        return true;
+    return false;
   }
 
 

@@ -3,6 +3,7 @@
 #include <bfemp/boundary/level_set.h>
 
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 
@@ -59,6 +60,15 @@ namespace bfemp
                        "velocity",
                        components<dim>(0, 0, 0),
                        "[m/s] Constant velocity of the obstacle");
+    prm.declare_entry(
+      "keyframes",
+      "",
+      Patterns::Anything(),
+      "[s: m/s, rad/s] Instead of 'velocity': 't: vx, vy[, vz], 0; ...', "
+      "from time t on (times increasing) the obstacle moves with velocity v; "
+      "at rest before the first time. The form of an FEM body's rigid "
+      "'keyframes'; the angular velocity must be 0 (level sets only "
+      "translate). Empty: use 'velocity'.");
   }
 
 
@@ -85,6 +95,26 @@ namespace bfemp
     offset                      = prm.get_double("offset");
     solid_below                 = prm.get("solid side") == "below";
     obstacle_velocity           = get_vector<dim>(prm, "velocity");
+    keyframes.clear();
+    if (!Utilities::trim(prm.get("keyframes")).empty())
+      {
+        require_input(obstacle_velocity.norm() == 0.,
+                      where,
+                      "velocity",
+                      to_input_string(Point<dim>(obstacle_velocity)),
+                      "must be zero when 'keyframes' is given (give one of "
+                      "them)");
+        keyframes =
+          PrescribedMotionParameters<dim>::parse_keyframes(prm.get("keyframes"),
+                                                           where);
+        for (const auto &frame : keyframes)
+          require_input(frame.angular_velocity == 0.,
+                        where,
+                        "keyframes",
+                        prm.get("keyframes"),
+                        "the angular velocity of every keyframe must be 0: "
+                        "level sets only translate");
+      }
 
     if (type == Type::half_plane)
       {
@@ -113,10 +143,31 @@ namespace bfemp
 
 
   template <int dim>
+  Tensor<1, dim>
+  LevelSet<dim>::displacement(const double time) const
+  {
+    if (keyframes.empty())
+      return time * obstacle_velocity;
+    Tensor<1, dim> u;
+    for (unsigned int k = 0; k < keyframes.size(); ++k)
+      {
+        const double begin = keyframes[k].time;
+        const double end =
+          k + 1 < keyframes.size() ? keyframes[k + 1].time : time;
+        if (time <= begin)
+          break;
+        u += (std::min(time, end) - begin) * keyframes[k].velocity;
+      }
+    return u;
+  }
+
+
+
+  template <int dim>
   Point<dim>
   LevelSet<dim>::to_initial_frame(const Point<dim> &x, const double time) const
   {
-    return x - time * obstacle_velocity;
+    return x - displacement(time);
   }
 
 
@@ -215,10 +266,16 @@ namespace bfemp
 
 
   template <int dim>
-  const Tensor<1, dim> &
-  LevelSet<dim>::velocity() const
+  Tensor<1, dim>
+  LevelSet<dim>::velocity(const double time) const
   {
-    return obstacle_velocity;
+    if (keyframes.empty())
+      return obstacle_velocity;
+    Tensor<1, dim> v; // at rest before the first keyframe
+    for (const auto &frame : keyframes)
+      if (time >= frame.time)
+        v = frame.velocity;
+    return v;
   }
 
 

@@ -90,82 +90,6 @@ namespace bfemp
       return dim == 2 ? "'time: vx, vy, omega'" : "'time: vx, vy, vz, omega'";
     }
 
-    template <int dim>
-    std::vector<typename PrescribedMotionParameters<dim>::Keyframe>
-    parse_keyframes(const std::string &text, const std::string &where)
-    {
-      const std::string allowed_form =
-        "the form is " + keyframe_form<dim>() +
-        " [s: m/s, rad/s], keyframes separated by ';', e.g. '0: " +
-        parameter_tools::components<dim>(1, 0, 0) +
-        ", 0.5; 2: " + parameter_tools::components<dim>(0, 0, 0) + ", 0'";
-
-      std::vector<typename PrescribedMotionParameters<dim>::Keyframe> keyframes;
-      for (const std::string &piece : Utilities::split_string_list(text, ';'))
-        {
-          if (piece.empty()) // tolerate a trailing ';'
-            continue;
-          const std::string keyframe = "keyframe " +
-                                       std::to_string(keyframes.size()) +
-                                       " ('" + piece + "')";
-          const std::size_t colon = piece.find(':');
-          require_input(colon != std::string::npos,
-                        where,
-                        "keyframes",
-                        text,
-                        keyframe + " has no ':' after the time; " +
-                          allowed_form);
-
-          typename PrescribedMotionParameters<dim>::Keyframe frame;
-          require_input(read_number(piece.substr(0, colon), frame.time),
-                        where,
-                        "keyframes",
-                        text,
-                        keyframe + ": the time '" +
-                          trim(piece.substr(0, colon)) + "' is not a number; " +
-                          allowed_form);
-
-          const std::vector<std::string> numbers =
-            Utilities::split_string_list(piece.substr(colon + 1), ',');
-          require_input(numbers.size() == dim + 1,
-                        where,
-                        "keyframes",
-                        text,
-                        keyframe + " has " + std::to_string(numbers.size()) +
-                          " numbers after the time, expected " +
-                          std::to_string(dim + 1) + "; " + allowed_form);
-          std::vector<double> values(dim + 1);
-          for (unsigned int i = 0; i <= dim; ++i)
-            require_input(read_number(numbers[i], values[i]),
-                          where,
-                          "keyframes",
-                          text,
-                          keyframe + ": '" + numbers[i] +
-                            "' is not a number; " + allowed_form);
-          for (unsigned int d = 0; d < dim; ++d)
-            frame.velocity[d] = values[d];
-          frame.angular_velocity = values[dim];
-
-          if (!keyframes.empty())
-            require_input(frame.time > keyframes.back().time,
-                          where,
-                          "keyframes",
-                          text,
-                          "keyframe times must increase strictly, but " +
-                            keyframe + " at t = " +
-                            to_input_string(frame.time) + " follows t = " +
-                            to_input_string(keyframes.back().time));
-          keyframes.push_back(frame);
-        }
-      require_input(!keyframes.empty(),
-                    where,
-                    "keyframes",
-                    "'" + text + "'",
-                    "a rigid motion needs at least one keyframe; " +
-                      allowed_form);
-      return keyframes;
-    }
-
     std::map<std::string, double>
     parse_constants(const std::string &text, const std::string &where)
     {
@@ -212,6 +136,82 @@ namespace bfemp
     , constants{{"pi", numbers::PI}}
   {
     rotation_axis[2] = 1.;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename PrescribedMotionParameters<dim>::Keyframe>
+  PrescribedMotionParameters<dim>::parse_keyframes(const std::string &text,
+                                                   const std::string &where)
+  {
+    const std::string allowed_form =
+      "the form is " + keyframe_form<dim>() +
+      " [s: m/s, rad/s], keyframes separated by ';', e.g. '0: " +
+      parameter_tools::components<dim>(1, 0, 0) +
+      ", 0.5; 2: " + parameter_tools::components<dim>(0, 0, 0) + ", 0'";
+
+    std::vector<Keyframe> keyframes;
+    for (const std::string &piece : Utilities::split_string_list(text, ';'))
+      {
+        if (piece.empty()) // tolerate a trailing ';'
+          continue;
+        const std::string keyframe =
+          "keyframe " + std::to_string(keyframes.size()) + " ('" + piece + "')";
+        const std::size_t colon = piece.find(':');
+        require_input(colon != std::string::npos,
+                      where,
+                      "keyframes",
+                      text,
+                      keyframe + " has no ':' after the time; " + allowed_form);
+
+        Keyframe frame;
+        require_input(read_number(piece.substr(0, colon), frame.time),
+                      where,
+                      "keyframes",
+                      text,
+                      keyframe + ": the time '" + trim(piece.substr(0, colon)) +
+                        "' is not a number; " + allowed_form);
+
+        const std::vector<std::string> numbers =
+          Utilities::split_string_list(piece.substr(colon + 1), ',');
+        require_input(numbers.size() == dim + 1,
+                      where,
+                      "keyframes",
+                      text,
+                      keyframe + " has " + std::to_string(numbers.size()) +
+                        " numbers after the time, expected " +
+                        std::to_string(dim + 1) + "; " + allowed_form);
+        std::vector<double> values(dim + 1);
+        for (unsigned int i = 0; i <= dim; ++i)
+          require_input(read_number(numbers[i], values[i]),
+                        where,
+                        "keyframes",
+                        text,
+                        keyframe + ": '" + numbers[i] + "' is not a number; " +
+                          allowed_form);
+        for (unsigned int d = 0; d < dim; ++d)
+          frame.velocity[d] = values[d];
+        frame.angular_velocity = values[dim];
+
+        if (!keyframes.empty())
+          require_input(frame.time > keyframes.back().time,
+                        where,
+                        "keyframes",
+                        text,
+                        "keyframe times must increase strictly, but " +
+                          keyframe + " at t = " + to_input_string(frame.time) +
+                          " follows t = " +
+                          to_input_string(keyframes.back().time));
+        keyframes.push_back(frame);
+      }
+    require_input(!keyframes.empty(),
+                  where,
+                  "keyframes",
+                  "'" + text + "'",
+                  "a rigid motion needs at least one keyframe; " +
+                    allowed_form);
+    return keyframes;
   }
 
 
@@ -343,7 +343,7 @@ namespace bfemp
 
     keyframes.clear();
     if (motion == Motion::rigid)
-      keyframes = parse_keyframes<dim>(prm.get("keyframes"), where);
+      keyframes = parse_keyframes(prm.get("keyframes"), where);
 
     if (nodes == NodeSelection::box)
       for (unsigned int d = 0; d < dim; ++d)

@@ -371,6 +371,7 @@ namespace bfemp
     last_contact.minimum_distance = m.minimum_distance;
     last_contact.barrier_energy   = m.energy;
     last_contact.force            = m.force;
+    last_contact.particles_inside = contact_geometry->particles_inside(u);
     if (with_friction)
       {
         last_contact.friction_pairs   = friction->n_pairs();

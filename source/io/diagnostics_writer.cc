@@ -47,14 +47,15 @@ namespace bfemp
       file << ",angular_momentum";
     else
       file << ",angular_momentum_x,angular_momentum_y,angular_momentum_z";
-    file << ",mass,min_J,max_speed,wall_time";
+    file << ",mass,min_J,max_speed,wall_time,particles_in_level_sets";
     if (implicit)
       file << ",newton_iterations,line_search_backtracks,step_bound_hits,"
               "residual,dofs,assembly_time,factorization_time,solve_time,"
               "line_search_time";
     if (with_contact)
       {
-        file << ",contact_pairs,contact_particles,min_distance,"
+        file << ",contact_pairs,contact_particles,particles_in_fem,"
+                "min_distance,"
                 "barrier_energy,friction_pairs,friction_updates,"
                 "friction_dissipation,ccd_bound_hits,partial_constraint_moves";
         for (unsigned int m = 0; m < n_mpm_bodies; ++m)
@@ -87,7 +88,8 @@ namespace bfemp
     for (unsigned int c = (dim == 2 ? 2 : 0); c < 3; ++c)
       row << ',' << d.angular_momentum[c];
     row << ',' << d.mass << ',' << d.min_J << ',' << d.max_speed << ','
-        << std::setprecision(6) << wall_time;
+        << std::setprecision(6) << wall_time << ','
+        << d.particles_in_level_sets;
     if (implicit)
       row << ',' << newton.iterations << ',' << newton.backtracks << ','
           << newton.bound_hits << ',' << newton.residual << ',' << n_dofs << ','
@@ -96,9 +98,9 @@ namespace bfemp
     if (with_contact)
       {
         row << std::setprecision(12) << ',' << contact.pairs << ','
-            << contact.particles << ',' << contact.minimum_distance << ','
-            << contact.barrier_energy << ',' << contact.friction_pairs << ','
-            << contact.friction_updates << ','
+            << contact.particles << ',' << contact.particles_inside << ','
+            << contact.minimum_distance << ',' << contact.barrier_energy << ','
+            << contact.friction_pairs << ',' << contact.friction_updates << ','
             << contact.accumulated_dissipation << ',' << newton.ccd_bound_hits
             << ',' << newton.partial_constraint_moves;
         for (unsigned int m = 0; m < n_mpm_bodies; ++m)

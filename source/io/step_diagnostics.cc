@@ -15,10 +15,12 @@ namespace bfemp
     elastic_energy += other.elastic_energy;
     gravitational_energy += other.gravitational_energy;
     linear_momentum += other.linear_momentum;
+    first_moment += other.first_moment;
     angular_momentum += other.angular_momentum;
     min_J     = std::min(min_J, other.min_J);
     max_speed = std::max(max_speed, other.max_speed);
     finite    = finite && other.finite;
+    particles_in_level_sets += other.particles_in_level_sets;
     return *this;
   }
 
@@ -29,6 +31,24 @@ namespace bfemp
   StepDiagnostics<dim>::total_energy() const
   {
     return kinetic_energy + elastic_energy + gravitational_energy;
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  StepDiagnostics<dim>::center_of_mass() const
+  {
+    return mass > 0. ? Point<dim>(first_moment / mass) : Point<dim>();
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  StepDiagnostics<dim>::center_of_mass_velocity() const
+  {
+    return mass > 0. ? linear_momentum / mass : Tensor<1, dim>();
   }
 
 
@@ -67,12 +87,16 @@ namespace bfemp
     const ParticleSystem<dim>                         &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
     const ParticleGridTransfer<dim>                   &transfer,
-    const Tensor<1, dim>                              &gravity)
+    const Tensor<1, dim>                              &gravity,
+    const unsigned int                                 body)
   {
     using Layout = ParticleLayout<dim>;
     return particles.template sum<StepDiagnostics<dim>>(
       [&](const auto &particle) {
-        const auto           p = particle.get_properties();
+        const auto p = particle.get_properties();
+        if (body != numbers::invalid_unsigned_int &&
+            static_cast<unsigned int>(p[Layout::body_id]) != body)
+          return StepDiagnostics<dim>();
         const Point<dim>     x = particle.get_location();
         const double         m = p[Layout::mass];
         const Tensor<1, dim> v = Layout::get_vector(p, Layout::velocity);
@@ -90,6 +114,7 @@ namespace bfemp
         d.elastic_energy = p[Layout::rest_volume] * material.energy_density(F);
         d.gravitational_energy = -m * (gravity * x);
         d.linear_momentum      = m * v;
+        d.first_moment         = m * x;
         d.angular_momentum     = particle_angular_momentum(m, x, v, B);
         d.min_J                = determinant(F);
         d.max_speed            = v.norm();
@@ -143,34 +168,47 @@ namespace bfemp
   {
     StepDiagnostics d;
     for (const auto &body : bodies)
-      {
-        for (unsigned int a = 0; a < body->n_nodes(); ++a)
-          {
-            const double          m = body->masses()[a];
-            const Point<dim>     &x = body->positions()[a];
-            const Tensor<1, dim> &v = body->velocities()[a];
-            d.mass += m;
-            d.kinetic_energy += 0.5 * m * v.norm_square();
-            d.gravitational_energy -= m * (gravity * x);
-            d.linear_momentum += m * v;
-            d.angular_momentum +=
-              particle_angular_momentum<dim>(m, x, v, Tensor<2, dim>());
-            d.max_speed = std::max(d.max_speed, v.norm());
-            d.finite    = d.finite && std::isfinite(x.norm_square()) &&
-                       std::isfinite(v.norm_square());
-          }
-        for (unsigned int e = 0; e < body->elements().size(); ++e)
-          {
-            typename SimplexElement<dim>::NodePositions x;
-            for (unsigned int a = 0; a <= dim; ++a)
-              x[a] = body->positions()[body->element_nodes()[e][a]];
-            const auto  &element = body->elements()[e];
-            const double J       = determinant(element.deformation_gradient(x));
-            d.min_J              = std::min(d.min_J, J);
-            if (J > 0.)
-              d.elastic_energy += element.energy(x, body->material());
-          }
-      }
+      d += measure(*body, gravity);
+    return d;
+  }
+
+
+
+  template <int dim>
+  StepDiagnostics<dim>
+  StepDiagnostics<dim>::measure(const FemBody<dim>   &body,
+                                const Tensor<1, dim> &gravity)
+  {
+    StepDiagnostics d;
+    {
+      for (unsigned int a = 0; a < body.n_nodes(); ++a)
+        {
+          const double          m = body.masses()[a];
+          const Point<dim>     &x = body.positions()[a];
+          const Tensor<1, dim> &v = body.velocities()[a];
+          d.mass += m;
+          d.first_moment += m * x;
+          d.kinetic_energy += 0.5 * m * v.norm_square();
+          d.gravitational_energy -= m * (gravity * x);
+          d.linear_momentum += m * v;
+          d.angular_momentum +=
+            particle_angular_momentum<dim>(m, x, v, Tensor<2, dim>());
+          d.max_speed = std::max(d.max_speed, v.norm());
+          d.finite    = d.finite && std::isfinite(x.norm_square()) &&
+                     std::isfinite(v.norm_square());
+        }
+      for (unsigned int e = 0; e < body.elements().size(); ++e)
+        {
+          typename SimplexElement<dim>::NodePositions x;
+          for (unsigned int a = 0; a <= dim; ++a)
+            x[a] = body.positions()[body.element_nodes()[e][a]];
+          const auto  &element = body.elements()[e];
+          const double J       = determinant(element.deformation_gradient(x));
+          d.min_J              = std::min(d.min_J, J);
+          if (J > 0.)
+            d.elastic_energy += element.energy(x, body.material());
+        }
+    }
     return d;
   }
 

@@ -232,7 +232,39 @@ namespace bfemp
                                                            parameters.gravity);
     if (!fem_body_list.empty())
       d += StepDiagnostics<dim>::measure(fem_body_list, parameters.gravity);
+    if (parameters.boundaries.has_level_sets())
+      d.particles_in_level_sets =
+        particle_system
+          .template sum<StepDiagnostics<dim>>([&](const auto &particle) {
+            StepDiagnostics<dim> inside;
+            inside.particles_in_level_sets =
+              parameters.boundaries.inside_level_set(particle.get_location(),
+                                                     current_time)
+                ? 1
+                : 0;
+            return inside;
+          })
+          .particles_in_level_sets;
     return d;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::write_body_diagnostics(
+    BodyDiagnosticsWriter<dim> &writer) const
+  {
+    std::vector<StepDiagnostics<dim>> mpm, fem;
+    for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+      mpm.push_back(StepDiagnostics<dim>::measure(particle_system,
+                                                  materials,
+                                                  transfer,
+                                                  parameters.gravity,
+                                                  b));
+    for (const auto &body : fem_body_list)
+      fem.push_back(StepDiagnostics<dim>::measure(*body, parameters.gravity));
+    writer.write(step, current_time, mpm, fem);
   }
 
 
@@ -318,7 +350,7 @@ namespace bfemp
     // run's series and mislead; only bfemp's own file names are removed.
     const std::regex ours(
       "(particles|grid|fem_body_[0-9]+)(_[0-9]+\\.vtu|\\.pvd)(\\.part)?|"
-      "diagnostics\\.csv");
+      "diagnostics\\.csv|bodies\\.csv");
     for (const auto &entry : std::filesystem::directory_iterator(output_folder))
       if (entry.is_regular_file() &&
           std::regex_match(entry.path().filename().string(), ours))
@@ -376,7 +408,10 @@ namespace bfemp
                                             parameters.fem_bodies.size())
                    : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
                                             parameters.time.is_implicit());
-    ProgressReporter progress(console,
+    BodyDiagnosticsWriter<dim> body_writer(output_folder + "/bodies.csv",
+                                           parameters.bodies.size(),
+                                           parameters.fem_bodies.size());
+    ProgressReporter           progress(console,
                               run.end_time,
                               !run.quiet && !run.test_mode);
 
@@ -391,6 +426,7 @@ namespace bfemp
     StepDiagnostics<dim> state = diagnostics();
     check_state(state);
     diagnostics_writer.write(step, time, 0., state, progress.wall_time());
+    write_body_diagnostics(body_writer);
     write_snapshot(time);
     if (run.test_mode)
       print_test_summary(time, state);
@@ -400,7 +436,8 @@ namespace bfemp
       {
         const double dt = next_time_step(time, state.max_speed);
         advance(dt, time);
-        time = (dt == run.end_time - time) ? run.end_time : time + dt;
+        time         = (dt == run.end_time - time) ? run.end_time : time + dt;
+        current_time = time;
         ++step;
 
         const bool snapshot_due =
@@ -420,6 +457,7 @@ namespace bfemp
               implicit_integrator ? implicit_integrator->contact_statistics()
                                   : ContactStatistics<dim>());
             newton_since_row = NewtonStatistics();
+            write_body_diagnostics(body_writer);
           }
         else
           // The next step's CFL check needs the current speed, not the one

@@ -4,6 +4,7 @@
 // distance where the level set is one, and a normal that is unit length,
 // points out of the obstacle and is perpendicular to the sine curve.
 
+#include <bfemp/base/input_error.h>
 #include <bfemp/boundary/boundary_condition.h>
 #include <bfemp/boundary/level_set.h>
 
@@ -144,6 +145,69 @@ namespace
                              "perpendicular to it and out of the solid");
       }
   }
+
+  // Keyframes: at rest before t = 0.1, then (0, -1) m/s until 0.4, then
+  // (-1, 0) until 0.9, then (0, 1): the path of BFEMP Section 6.2's
+  // boundary. The half-plane y > 0.5 - d shows the vertical displacement d,
+  // the velocity the keyframe in force.
+  void
+  check_keyframes()
+  {
+    const LevelSet<2> plane =
+      level_set({{"type", "half-plane"},
+                 {"point", "0, 0.5"},
+                 {"normal", "0, 1"},
+                 {"keyframes", "0.1: 0, -1, 0; 0.4: -1, 0, 0; 0.9: 0, 1, 0"}});
+    const Point<2> x(0., 0.);
+    const auto     height = [&](const double t) {
+      return -plane.value(x, t); // the plane's height above x
+    };
+    bfemp_tests::check(std::abs(height(0.05) - 0.5) < 1e-14 &&
+                         plane.velocity(0.05).norm() == 0.,
+                       "keyframes: at rest before the first keyframe");
+    bfemp_tests::check(std::abs(height(0.3) - 0.3) < 1e-14 &&
+                         near(plane.velocity(0.3), vec(0, -1)),
+                       "keyframes: moves down with the first velocity");
+    bfemp_tests::check(std::abs(height(0.7) - 0.2) < 1e-14 &&
+                         near(plane.velocity(0.7), vec(-1, 0)),
+                       "keyframes: sideways motion keeps the height");
+    bfemp_tests::check(std::abs(height(1.2) - 0.5) < 1e-14 &&
+                         near(plane.velocity(1.2), vec(0, 1)),
+                       "keyframes: the last velocity holds after its time");
+
+    const LevelSet<2> wave =
+      level_set({{"type", "sine wave"},
+                 {"offset", "0.2"},
+                 {"keyframes", "0: 0, -1, 0; 0.1: -1, 0, 0"}});
+    // At t = 0.125 the curve moved by (-0.025, -0.1): the point that was on
+    // the curve at x0 is now on it at x0 - 0.025.
+    const double x0 = 0.013;
+    const double y0 = 0.025 * std::cos(2. * numbers::PI * x0 / 0.1) + 0.2;
+    bfemp_tests::check(std::abs(wave.value(Point<2>(x0 - 0.025, y0 - 0.1),
+                                           0.125)) < 1e-14,
+                       "keyframes: a sine wave translates along the path");
+
+    for (const auto &[entries, what] :
+         std::vector<std::pair<std::vector<std::pair<std::string, std::string>>,
+                               std::string>>{
+           {{{"keyframes", "0: 0, -1, 0.5"}}, "a rotating keyframe"},
+           {{{"velocity", "1, 0"}, {"keyframes", "0: 0, -1, 0"}},
+            "both velocity and keyframes"},
+           {{{"keyframes", "0: 0, -1, 0; 0: 1, 0, 0"}},
+            "keyframe times that do not increase"}})
+      {
+        bool refused = false;
+        try
+          {
+            level_set(entries);
+          }
+        catch (const InputError &)
+          {
+            refused = true;
+          }
+        bfemp_tests::check(refused, "keyframes: refuses " + what);
+      }
+  }
 } // namespace
 
 
@@ -155,4 +219,5 @@ main(int argc, char **argv)
   bfemp_tests::initlog();
   check_conditions();
   check_level_sets();
+  check_keyframes();
 }

@@ -82,6 +82,18 @@ namespace bfemp
     bool
     any() const;
 
+    /** True if the level sets exist. */
+    bool
+    has_level_sets() const;
+
+    /**
+     * Whether @p x lies strictly inside a level-set obstacle at @p time
+     * (phi < 0): a particle there has penetrated the obstacle, which
+     * grid-node conditions cannot prevent (BFEMP Section 6.2).
+     */
+    bool
+    inside_level_set(const Point<dim> &x, const double time) const;
+
   private:
     /**
      * f(condition, outward normal, obstacle velocity) for every wall and

@@ -2,6 +2,7 @@
 #define bfemp_boundary_level_set_h
 
 #include <bfemp/boundary/boundary_condition.h>
+#include <bfemp/fem/prescribed_motion_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -12,8 +13,11 @@ namespace bfemp
    * An analytic rigid obstacle acting on the grid, prm subsection "level set
    * i" of "boundaries": a half-plane, a solid box, or the region below (or
    * above) the sine wave y = A cos(2 pi x / L) + c. phi(x) <= 0 inside the
-   * obstacle; grid nodes there get the boundary condition. The obstacle may
-   * translate with a constant velocity.
+   * obstacle; grid nodes there get the boundary condition. The obstacle
+   * translates with a constant velocity or with the piecewise-constant
+   * velocities of keyframes (the form of an FEM body's rigid motion, without
+   * rotation), so the level-set boundary of BFEMP Section 6.2 can follow
+   * the same path as the FEM boundary it is compared with.
    */
   template <int dim>
   class LevelSet
@@ -43,10 +47,15 @@ namespace bfemp
     const BoundaryCondition &
     condition() const;
 
-    const Tensor<1, dim> &
-    velocity() const;
+    /** The obstacle's velocity at @p time. */
+    Tensor<1, dim>
+    velocity(const double time) const;
 
   private:
+    /** How far the obstacle has moved since t = 0. */
+    Tensor<1, dim>
+    displacement(const double time) const;
+
     /** x moved back to the obstacle's position at t = 0. */
     Point<dim>
     to_initial_frame(const Point<dim> &x, const double time) const;
@@ -59,6 +68,8 @@ namespace bfemp
     double            amplitude = 0., wavelength = 1., offset = 0.;
     bool              solid_below = true;
     Tensor<1, dim>    obstacle_velocity;
+    /** Entry "keyframes" (translation only); empty: constant velocity. */
+    std::vector<typename PrescribedMotionParameters<dim>::Keyframe> keyframes;
   };
 } // namespace bfemp
 

@@ -21,6 +21,11 @@ namespace bfemp
     unsigned int pairs = 0;
     /** Particles within dhat of some facet. */
     unsigned int particles = 0;
+    /**
+     * Particles inside an FEM element at the end of the step: 0 unless the
+     * barrier failed (BFEMP Section 6.2 counts them).
+     */
+    unsigned int particles_inside = 0;
     /** Smallest particle-facet distance among those (+inf if none). */
     double minimum_distance = std::numeric_limits<double>::infinity();
     /** B of eqs. 31/32 (not scaled by the step) [J]. */

@@ -108,6 +108,14 @@ namespace bfemp
     declare_parameters(ParameterHandler &prm);
 
     /**
+     * Reads a keyframe list 't: vx, vy[, vz], omega; ...' (entry
+     * "keyframes" of subsection @p where); throws an InputError for a
+     * malformed keyframe, times that do not increase or an empty list.
+     */
+    static std::vector<Keyframe>
+    parse_keyframes(const std::string &text, const std::string &where);
+
+    /**
      * Reads and checks the entries; @p where is the path of this
      * subsection (e.g. "fem body 0/prescribed motion") for messages. Throws
      * an InputError for malformed keyframes, non-increasing keyframe times,

@@ -13,7 +13,8 @@ namespace bfemp
   /**
    * diagnostics.csv: one row per diagnosed step with step, time, dt,
    * energies, linear and angular momentum, mass, min J, max speed and wall
-   * time. Rows are written whole and flushed, so the file always ends with a
+   * time, and the particles inside level-set obstacles. Rows are written
+   * whole and flushed, so the file always ends with a
    * complete row.
    */
   template <int dim>
@@ -30,7 +31,8 @@ namespace bfemp
 
     /**
      * Scenes with particle-mesh contact add its columns: pairs within dhat,
-     * particles in contact, the least distance, the barrier energy, friction
+     * particles in contact, particles inside an FEM element (0 unless the
+     * barrier failed), the least distance, the barrier energy, friction
      * pairs and updates, the accumulated friction dissipation, the CCD step
      * bound hits and partial moves of prescribed motions (summed since the
      * previous row), and the contact force on every FEM body from every MPM

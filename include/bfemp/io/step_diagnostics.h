@@ -26,11 +26,18 @@ namespace bfemp
     double         elastic_energy       = 0.;
     double         gravitational_energy = 0.;
     Tensor<1, dim> linear_momentum;
+    /** sum m x: the centre of mass is first_moment / mass. */
+    Tensor<1, dim> first_moment;
     /** z-component only in 2D. */
     Tensor<1, 3> angular_momentum;
     double       min_J     = std::numeric_limits<double>::infinity();
     double       max_speed = 0.;
     bool         finite    = true;
+    /**
+     * Particles strictly inside a level-set obstacle (set by the
+     * Simulation, which knows the boundaries and the time).
+     */
+    unsigned int particles_in_level_sets = 0;
 
     /** Combines partial sums (min and max for min_J and max_speed). */
     StepDiagnostics &
@@ -39,12 +46,24 @@ namespace bfemp
     double
     total_energy() const;
 
-    /** Measures the particle state. */
+    /** first_moment / mass (0 for no mass). */
+    Point<dim>
+    center_of_mass() const;
+
+    /** linear_momentum / mass (0 for no mass). */
+    Tensor<1, dim>
+    center_of_mass_velocity() const;
+
+    /**
+     * Measures the particle state: all particles, or those of MPM body
+     * @p body alone.
+     */
     static StepDiagnostics
     measure(const ParticleSystem<dim>                         &particles,
             const std::vector<std::unique_ptr<Material<dim>>> &materials,
             const ParticleGridTransfer<dim>                   &transfer,
-            const Tensor<1, dim>                              &gravity);
+            const Tensor<1, dim>                              &gravity,
+            const unsigned int body = numbers::invalid_unsigned_int);
 
     /**
      * Measures the FEM bodies: lumped-mass kinetic energy and momentum, the
@@ -53,6 +72,10 @@ namespace bfemp
     static StepDiagnostics
     measure(const std::vector<std::unique_ptr<FemBody<dim>>> &bodies,
             const Tensor<1, dim>                             &gravity);
+
+    /** The same for one FEM body. */
+    static StepDiagnostics
+    measure(const FemBody<dim> &body, const Tensor<1, dim> &gravity);
 
     /** max_p |v_p| alone, for the CFL check between diagnosed steps. */
     static double

@@ -5,6 +5,7 @@
 #include <bfemp/grid/background_grid.h>
 #include <bfemp/integrator/explicit_mpm.h>
 #include <bfemp/integrator/implicit_integrator.h>
+#include <bfemp/io/body_diagnostics_writer.h>
 #include <bfemp/io/diagnostics_writer.h>
 #include <bfemp/io/fem_output.h>
 #include <bfemp/io/grid_output.h>
@@ -54,6 +55,10 @@ namespace bfemp
     /** The diagnostics of the current state. */
     StepDiagnostics<dim>
     diagnostics() const;
+
+    /** The row of bodies.csv: the current state of each body. */
+    void
+    write_body_diagnostics(BodyDiagnosticsWriter<dim> &writer) const;
 
   private:
     /** Samples every body into particles and checks the scene at t = 0. */
@@ -113,8 +118,9 @@ namespace bfemp
     std::unique_ptr<ParticleOutput<dim>> particle_output;
     std::unique_ptr<GridOutput<dim>>     grid_output;
     std::unique_ptr<FemOutput<dim>>      fem_output;
-    unsigned int                         step     = 0;
-    unsigned int                         snapshot = 0;
+    unsigned int                         step         = 0;
+    double                               current_time = 0.;
+    unsigned int                         snapshot     = 0;
   };
 } // namespace bfemp
 

@@ -1,0 +1,41 @@
+#ifndef bfemp_io_body_diagnostics_writer_h
+#define bfemp_io_body_diagnostics_writer_h
+
+#include <bfemp/io/step_diagnostics.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace bfemp
+{
+  /**
+   * bodies.csv: one row per diagnosed step with, for every MPM body m and
+   * every FEM body f, the mass, the centre of mass, its velocity (momentum /
+   * mass), the kinetic and the elastic energy (columns mpm<m>_... and
+   * fem<f>_...). The validation scenes read the quantities the BFEMP paper
+   * plots per body from it (energies of each ring, the centre-of-mass motion
+   * of a sliding box, the centre-of-mass height of a stack). Rows are
+   * written whole and flushed.
+   */
+  template <int dim>
+  class BodyDiagnosticsWriter
+  {
+  public:
+    BodyDiagnosticsWriter(const std::string &path,
+                          const unsigned int n_mpm_bodies,
+                          const unsigned int n_fem_bodies);
+
+    /** @p mpm and @p fem hold one measurement per body, in body order. */
+    void
+    write(const unsigned int                       step,
+          const double                             time,
+          const std::vector<StepDiagnostics<dim>> &mpm,
+          const std::vector<StepDiagnostics<dim>> &fem);
+
+  private:
+    std::ofstream file;
+  };
+} // namespace bfemp
+
+#endif
