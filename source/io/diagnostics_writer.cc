@@ -57,7 +57,8 @@ namespace bfemp
         file << ",contact_pairs,contact_particles,particles_in_fem,"
                 "min_distance,"
                 "barrier_energy,friction_pairs,friction_updates,"
-                "friction_dissipation,ccd_bound_hits,partial_constraint_moves";
+                "friction_dissipation,ccd_bound_hits,partial_constraint_moves,"
+                "carried_constraint_moves";
         for (unsigned int m = 0; m < n_mpm_bodies; ++m)
           for (unsigned int f = 0; f < n_fem_bodies; ++f)
             for (unsigned int d = 0; d < dim; ++d)
@@ -102,7 +103,8 @@ namespace bfemp
             << contact.minimum_distance << ',' << contact.barrier_energy << ','
             << contact.friction_pairs << ',' << contact.friction_updates << ','
             << contact.accumulated_dissipation << ',' << newton.ccd_bound_hits
-            << ',' << newton.partial_constraint_moves;
+            << ',' << newton.partial_constraint_moves << ','
+            << newton.carried_constraint_moves;
         for (unsigned int m = 0; m < n_mpm_bodies; ++m)
           for (unsigned int f = 0; f < n_fem_bodies; ++f)
             {

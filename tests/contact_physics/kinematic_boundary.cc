@@ -12,9 +12,10 @@
 // Checked for both:
 //  - no particle ever inside the plate or at distance 0 (invariant check),
 //    min_distance in (0, dhat) whenever there is contact;
-//  - the plate's prescribed moves had to be cut by collision detection in
-//    some step (partial_constraint_moves > 0): the particles in its way are
-//    pushed ahead, not crossed;
+//  - the plate's prescribed moves had to be cut by collision detection or
+//    carry the particles along (their linear response) in some step
+//    (partial_ or carried_constraint_moves > 0): the particles in its way
+//    are pushed ahead, not crossed;
 //  - it pressed the block (contact force up to > 1.5 m g);
 //  - no adhesion: after the plate has lifted off (t > 0.2 s) no pair is
 //    within dhat, and no particle rises above the block's initial top;
@@ -86,7 +87,8 @@ namespace
                                        "contact_force_m0_f0_x",
                                        "contact_force_m0_f0_y",
                                        "momentum_x",
-                                       "mass"});
+                                       "mass",
+                                       "carried_constraint_moves"});
     const double block_mass = c[7][0] - plate_mass;
     const double weight     = block_mass * 9.81;
     bool         distances = true, late_contact = false;
@@ -98,7 +100,7 @@ namespace
           distances = distances && c[2][i] > 0. && c[2][i] < 1e-3;
         if (c[0][i] > 0.2 + 1e-9)
           late_contact = late_contact || c[1][i] > 0.;
-        moves += c[3][i];
+        moves += c[3][i] + c[8][i];
         // The block pushes the plate up (+y).
         const double normal = c[5][i], tangential = std::abs(c[4][i]);
         pressing = std::max(pressing, normal);
@@ -117,8 +119,8 @@ namespace
       }
     deallog << "  distances in (0, dhat) in contact: "
             << (distances ? "yes" : "no")
-            << ", prescribed moves cut by CCD: " << (moves > 0. ? "yes" : "no")
-            << ", pressed (> 1.5 m g): "
+            << ", prescribed moves cut by CCD or carrying particles: "
+            << (moves > 0. ? "yes" : "no") << ", pressed (> 1.5 m g): "
             << (pressing > 1.5 * weight
                   ? "yes"
                   : "NO (" + rounded(pressing / weight) + " m g)")

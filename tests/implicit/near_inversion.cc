@@ -18,11 +18,13 @@
 // compression at t = 1 s. Two runs:
 //  - dt = 0.05 s: each step moves the top by half the initial element
 //    height. Newton moves the prescribed nodes towards their targets only
-//    as far as the det F bound allows (NewtonSolver::move_constraints), so
-//    no iterate inverts; once the top row is thinner than a step, the
-//    targets cannot be reached within the iteration limit and the run
-//    stops (outcome b, at t = 0.55, min det F ~0.41). (Before prescribed
-//    moves were filtered, the initial guess itself inverted at t = 0.5.)
+//    as far as the det F bound allows (NewtonSolver::move_constraints),
+//    carrying the free nodes along with their linear response, so no
+//    iterate inverts; once the top row is thinner than a step, the targets
+//    cannot be reached within the iteration limit and the run stops
+//    (outcome b, at t = 0.7, min det F ~0.25; without the carried free
+//    nodes at t = 0.55, min det F ~0.41; before prescribed moves were
+//    filtered, the initial guess itself inverted at t = 0.5).
 //  - dt = 0.01 s: gets to min det F ~0.23 at t = 0.67; then projected
 //    Newton, whose clamped tangent loses much of the curvature of the
 //    compressed neo-Hookean elements, converges too slowly (outcome b).

@@ -34,8 +34,8 @@ namespace bfemp
      * particles in contact, particles inside an FEM element (0 unless the
      * barrier failed), the least distance, the barrier energy, friction
      * pairs and updates, the accumulated friction dissipation, the CCD step
-     * bound hits and partial moves of prescribed motions (summed since the
-     * previous row), and the contact force on every FEM body from every MPM
+     * bound hits, partial moves of prescribed motions and the moves that
+     * carried the free DoFs along (summed since the previous row), and the contact force on every FEM body from every MPM
      * body (contact_force_m<m>_f<f>_<axis>).
      */
     DiagnosticsWriter(const std::string &path,

@@ -26,6 +26,9 @@ namespace bfemp
      * crossed a particle or inverted an element.
      */
     unsigned int partial_constraint_moves = 0;
+    /** Constraint moves that carried the free DoFs along (their linear
+     *  response), because that let the move go further. */
+    unsigned int carried_constraint_moves = 0;
     /** ||p||_inf / dt of the last iteration [m/s]. */
     double residual = 0.;
     /** E at the minimizer. */
@@ -85,7 +88,9 @@ namespace bfemp
      * Moves the constrained components of @p u towards their targets and
      * the obstacles towards the ends of their paths by the largest common
      * fraction that the step bound allows (all of the way if nothing is in
-     * the way). Returns the new obstacle progress; @p energy is updated.
+     * the way). The free DoFs move along with their linear response
+     * (free_response()) when that lets the move go further. Returns the new
+     * obstacle progress; @p energy is updated.
      */
     double
     move_constraints(IncrementalPotential<dim> &potential,
@@ -93,6 +98,19 @@ namespace bfemp
                      const double               progress,
                      double                    &energy,
                      NewtonStatistics          &statistics) const;
+
+    /**
+     * The free DoFs' linear response r to the constraint and obstacle
+     * @p move, H_ff r = -H_fc m, with H_fc m the difference of the free
+     * gradient along a small fraction of the move (@p bound: the feasible
+     * fraction of the move alone).
+     */
+    Vector<double>
+    free_response(IncrementalPotential<dim> &potential,
+                  const Vector<double>      &u,
+                  const Vector<double>      &move,
+                  const double               progress,
+                  const double               bound) const;
 
     /**
      * Backtracks from the bounded trial step; returns the accepted step
