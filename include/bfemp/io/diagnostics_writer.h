@@ -35,8 +35,9 @@ namespace bfemp
      * barrier failed), the least distance, the barrier energy, friction
      * pairs and updates, the accumulated friction dissipation, the CCD step
      * bound hits, partial moves of prescribed motions and the moves that
-     * carried the free DoFs along (summed since the previous row), and the contact force on every FEM body from every MPM
-     * body (contact_force_m<m>_f<f>_<axis>).
+     * carried the free DoFs along (summed since the previous row), and the
+     * contact force on every FEM body from every MPM body
+     * (contact_force_m<m>_f<f>_<axis>).
      */
     DiagnosticsWriter(const std::string &path,
                       const unsigned int n_mpm_bodies,
