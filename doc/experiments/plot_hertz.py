@@ -18,7 +18,6 @@ and hertz_disk.png. Needs numpy, matplotlib and the vtk Python module.
 import os
 import re
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 
@@ -27,6 +26,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from run_data import pvd, read_vtu  # noqa: E402
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 
 
@@ -34,26 +35,6 @@ def entry(prm, name):
     """First value of 'set <name> = ...' in a prm text."""
     m = re.search(r"set\s+" + re.escape(name) + r"\s*=\s*([^\n#]+)", prm)
     return m.group(1).strip()
-
-
-def pvd(path):
-    root = ET.parse(path).getroot()
-    folder = os.path.dirname(path)
-    return [(float(e.get("timestep")), os.path.join(folder, e.get("file")))
-            for e in root.iter("DataSet")]
-
-
-def read_vtu(path):
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    vm = grid.GetPointData().GetArray("von_mises")
-    return (vtk_to_numpy(grid.GetPoints().GetData())[:, :2],
-            None if vm is None else vtk_to_numpy(vm))
 
 
 def measure(folder):
@@ -65,13 +46,13 @@ def measure(folder):
     spacing = float(entry(prm, "cell size")) / float(entry(prm, "particles per cell"))
     model = entry(prm, "model")
     d = np.genfromtxt(os.path.join(folder, "diagnostics.csv"), delimiter=",", names=True)
-    plate, _ = read_vtu(pvd(os.path.join(folder, "fem_body_0.pvd"))[0][1])
+    plate = read_vtu(pvd(os.path.join(folder, "fem_body_0.pvd"))[0][1])["points"]
     top = plate[:, 1].max()
     rows = []
     for t, path in pvd(os.path.join(folder, "particles.pvd")):
         k = int(np.argmin(np.abs(d["time"] - t)))
         F = -d["contact_force_m0_f0_y"][k]
-        x, _ = read_vtu(path)
+        x = read_vtu(path)["points"]
         gap = x[:, 1] - top
         near = x[gap < dhat, 0]
         layer = x[gap < dhat + spacing, 0]
@@ -112,13 +93,14 @@ def main():
 
     # the last snapshot of the first run, coloured by von Mises stress
     t, path = pvd(os.path.join(runs[0]["folder"], "particles.pvd"))[-1]
-    x, vm = read_vtu(path)
+    snapshot = read_vtu(path)
+    x, vm = snapshot["points"], snapshot["point_vm"]
     fig, axes = plt.subplots(1, 2, figsize=(8, 4))
     for ax, zoom in zip(axes, [False, True]):
         sc = ax.scatter(x[:, 0], x[:, 1], c=vm, s=0.2 if not zoom else 4,
                         cmap="viridis", linewidths=0)
         for b in (0, 1):
-            p, _ = read_vtu(pvd(os.path.join(runs[0]["folder"], "fem_body_%d.pvd" % b))[-1][1])
+            p = read_vtu(pvd(os.path.join(runs[0]["folder"], "fem_body_%d.pvd" % b))[-1][1])["points"]
             ax.fill([p[:, 0].min(), p[:, 0].max(), p[:, 0].max(), p[:, 0].min()],
                     [p[:, 1].min(), p[:, 1].min(), p[:, 1].max(), p[:, 1].max()],
                     color="0.6")

@@ -13,7 +13,6 @@ Needs numpy, matplotlib and the vtk Python module (Debian: python3-vtk9).
 """
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 
@@ -23,6 +22,8 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from run_data import pvd, read_vtu  # noqa: E402
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 
 
@@ -76,32 +77,6 @@ def energy_figure(runs, out):
     fig.tight_layout()
     fig.savefig(out, dpi=90)
     plt.close(fig)
-
-
-def pvd(path):
-    """(time, file) pairs of a .pvd series."""
-    root = ET.parse(path).getroot()
-    folder = os.path.dirname(path)
-    return [(float(e.get("timestep")), os.path.join(folder, e.get("file")))
-            for e in root.iter("DataSet")]
-
-
-def read_vtu(path):
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
-    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()) if hasattr(
-        grid.GetCells(), "GetConnectivityArray") else None
-    point_vm = grid.GetPointData().GetArray("von_mises")
-    cell_vm = grid.GetCellData().GetArray("von_mises")
-    return dict(points=points, cells=cells,
-                point_vm=None if point_vm is None else vtk_to_numpy(point_vm),
-                cell_vm=None if cell_vm is None else vtk_to_numpy(cell_vm))
 
 
 def snapshots(folder, times, out):

@@ -1,0 +1,33 @@
+"""Readers of bfemp run folders shared by the experiment plot scripts:
+the (time, file) list of a PVD series and the points, cells and von Mises
+stress of one VTU file. Needs the vtk Python module (Debian: python3-vtk9)."""
+import os
+import xml.etree.ElementTree as ET
+
+
+def pvd(path):
+    """(time, file) pairs of a .pvd series."""
+    root = ET.parse(path).getroot()
+    folder = os.path.dirname(path)
+    return [(float(e.get("timestep")), os.path.join(folder, e.get("file")))
+            for e in root.iter("DataSet")]
+
+
+def read_vtu(path):
+    """points (x, y), cell connectivity and the point and cell von Mises
+    arrays (None where the file has none) of a 2D VTU file."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()) if hasattr(
+        grid.GetCells(), "GetConnectivityArray") else None
+    point_vm = grid.GetPointData().GetArray("von_mises")
+    cell_vm = grid.GetCellData().GetArray("von_mises")
+    return dict(points=points, cells=cells,
+                point_vm=None if point_vm is None else vtk_to_numpy(point_vm),
+                cell_vm=None if cell_vm is None else vtk_to_numpy(cell_vm))
