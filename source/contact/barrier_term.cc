@@ -324,13 +324,15 @@ namespace bfemp
   BarrierTerm<dim>::begin_step(const Vector<double> &u)
   {
     registered.assign(contact_geometry.n_particles(), {});
+    stencil_registered.assign(contact_geometry.n_particles(), false);
     // Pairs a little farther than dhat join the pattern at once, so that
     // the first approach within the step does not rebuild it.
     const auto near =
       contact_geometry.near_pairs(u, 2. * parameters.activation_distance);
     for (unsigned int k = 0; k < near.size(); ++k)
       {
-        auto &nodes = registered[near.particles[k]];
+        auto &nodes                           = registered[near.particles[k]];
+        stencil_registered[near.particles[k]] = true;
         for (unsigned int j = near.offsets[k]; j < near.offsets[k + 1]; ++j)
           for (const unsigned int a :
                contact_geometry.surface(near.facets[j].surface)
@@ -353,7 +355,7 @@ namespace bfemp
   BarrierTerm<dim>::add_couplings(NodeSparsity &sparsity) const
   {
     for (unsigned int q = 0; q < registered.size(); ++q)
-      if (!registered[q].empty())
+      if (stencil_registered[q])
         {
           const auto                stencil = contact_geometry.stencil_nodes(q);
           std::vector<unsigned int> nodes(stencil.begin(), stencil.end());
@@ -371,8 +373,9 @@ namespace bfemp
     const unsigned int               particle,
     const std::vector<unsigned int> &fem_nodes) const
   {
-    auto &list  = registered[particle];
-    bool  added = false;
+    auto &list                   = registered[particle];
+    bool  added                  = !stencil_registered[particle];
+    stencil_registered[particle] = true;
     for (const unsigned int node : fem_nodes)
       if (node != DofSpace<dim>::invalid &&
           !std::binary_search(list.begin(), list.end(), node))

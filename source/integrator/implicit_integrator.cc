@@ -16,7 +16,8 @@ namespace bfemp
     const Tensor<1, dim>                              &gravity,
     const TimeParameters::ImplicitScheme              &scheme,
     const SolverParameters                            &solver,
-    const ContactParameters                           &contact)
+    const ContactParameters                           &contact,
+    SubsteppedMPM<dim>                                *substepped_mpm)
     : grid(grid)
     , particles(particles)
     , transfer(transfer)
@@ -25,6 +26,7 @@ namespace bfemp
     , gravity(gravity)
     , scheme(scheme)
     , with_mpm(particles.n_particles() > 0)
+    , substepped_mpm(substepped_mpm)
     , contact_parameters(contact)
     , with_contact(with_mpm && !fem_bodies.empty())
     , with_friction(with_contact && contact.has_friction())
@@ -39,7 +41,7 @@ namespace bfemp
           return !b->is_kinematic();
         }))
       terms.push_back(&fem_elasticity);
-    if (with_mpm)
+    if (with_mpm && !substepped_mpm)
       terms.push_back(&mpm_elasticity);
     if (with_contact)
       {
@@ -114,8 +116,11 @@ namespace bfemp
     for (unsigned int node = dofs.n_fem_nodes(); node < dofs.n_nodes(); ++node)
       {
         const std::size_t i = dofs.lattice_node(node);
-        node_mass[node]     = state.mass[i];
-        DofSpace<dim>::set(start_velocity, node, state.velocity[i]);
+        node_mass[node]     = state.mass[i] / node_force_ratio(node);
+        DofSpace<dim>::set(start_velocity,
+                           node,
+                           substepped_mpm ? state.new_velocity[i]
+                                          : state.velocity[i]);
       }
   }
 
@@ -201,16 +206,49 @@ namespace bfemp
     Vector<double>       elastic_gradient(dofs.n_dofs());
     if (!fem_bodies.empty())
       fem_elasticity.add_gradient(at_start, elastic_gradient);
-    if (with_mpm)
+    if (with_mpm && !substepped_mpm)
       mpm_elasticity.add_gradient(at_start, elastic_gradient);
     if (with_contact)
       barrier->add_gradient(at_start, elastic_gradient);
     for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
       DofSpace<dim>::set(acceleration,
                          node,
-                         gravity - DofSpace<dim>::get(elastic_gradient, node) /
-                                     (scale * node_mass[node]));
+                         node_gravity(node) -
+                           DofSpace<dim>::get(elastic_gradient, node) /
+                             (scale * node_mass[node]));
     return acceleration;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ImplicitIntegrator<dim>::free_advance(const unsigned int node,
+                                        const double       dt) const
+  {
+    if (substepped_mpm && node >= dofs.n_fem_nodes())
+      return state.displacement[dofs.lattice_node(node)];
+    return dt * DofSpace<dim>::get(start_velocity, node);
+  }
+
+
+
+  template <int dim>
+  double
+  ImplicitIntegrator<dim>::node_force_ratio(const unsigned int node) const
+  {
+    return substepped_mpm && node >= dofs.n_fem_nodes() ? constant_force_ratio
+                                                        : 1.;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ImplicitIntegrator<dim>::node_gravity(const unsigned int node) const
+  {
+    return substepped_mpm && node >= dofs.n_fem_nodes() ? Tensor<1, dim>()
+                                                        : gravity;
   }
 
 
@@ -225,9 +263,9 @@ namespace bfemp
     for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
       DofSpace<dim>::set(predicted,
                          node,
-                         dt * DofSpace<dim>::get(start_velocity, node) +
+                         free_advance(node, dt) +
                            a_weight * DofSpace<dim>::get(acceleration, node) +
-                           scale * gravity);
+                           scale * node_gravity(node));
     return predicted;
   }
 
@@ -245,8 +283,8 @@ namespace bfemp
       {
         const Tensor<1, dim> end_acceleration =
           (DofSpace<dim>::get(u, node) - DofSpace<dim>::get(predicted, node)) /
-            scale +
-          gravity;
+            (scale * node_force_ratio(node)) +
+          node_gravity(node);
         DofSpace<dim>::set(velocity,
                            node,
                            DofSpace<dim>::get(start_velocity, node) +
@@ -388,7 +426,8 @@ namespace bfemp
   void
   ImplicitIntegrator<dim>::step(const double       dt,
                                 const double       time,
-                                const unsigned int step_number)
+                                const unsigned int step_number,
+                                const unsigned int substeps)
   {
     scale = scheme.potential_weight() * dt * dt;
     mpm_elasticity.set_scale(scale);
@@ -400,6 +439,11 @@ namespace bfemp
 
     if (with_mpm)
       particles_to_grid();
+    if (with_mpm && substepped_mpm)
+      {
+        substepped_mpm->substep_and_reconstruct(dt, time, substeps, state);
+        constant_force_ratio = substepped_mpm->constant_force_ratio(substeps);
+      }
     number_unknowns();
     constrain(dt, time + dt);
     if (with_contact)

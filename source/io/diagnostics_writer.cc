@@ -8,9 +8,11 @@ namespace bfemp
 {
   template <int dim>
   DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
-                                            const bool         implicit)
+                                            const bool         implicit,
+                                            const bool         substepped)
     : file(path)
     , implicit(implicit)
+    , substepped(substepped)
   {
     write_header();
   }
@@ -20,10 +22,12 @@ namespace bfemp
   template <int dim>
   DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
                                             const unsigned int n_mpm,
-                                            const unsigned int n_fem)
+                                            const unsigned int n_fem,
+                                            const bool         substepped)
     : file(path)
     , implicit(true)
     , with_contact(true)
+    , substepped(substepped)
     , n_mpm_bodies(n_mpm)
     , n_fem_bodies(n_fem)
   {
@@ -64,6 +68,8 @@ namespace bfemp
             for (unsigned int d = 0; d < dim; ++d)
               file << ",contact_force_m" << m << "_f" << f << '_' << axis[d];
       }
+    if (substepped)
+      file << ",substeps";
     file << std::endl;
   }
 
@@ -78,7 +84,8 @@ namespace bfemp
                                 const double                  wall_time,
                                 const NewtonStatistics       &newton,
                                 const unsigned int            n_dofs,
-                                const ContactStatistics<dim> &contact)
+                                const ContactStatistics<dim> &contact,
+                                const unsigned int            substeps)
   {
     std::ostringstream row;
     row << std::setprecision(12) << step << ',' << time << ',' << dt << ','
@@ -116,6 +123,8 @@ namespace bfemp
                 row << ',' << force[d];
             }
       }
+    if (substepped)
+      row << ',' << substeps;
     row << '\n';
     file << row.str() << std::flush;
   }

@@ -31,7 +31,8 @@ namespace bfemp
                            const double       dt,
                            const unsigned int newton_iterations,
                            const unsigned int n_dofs,
-                           const int          contact_pairs)
+                           const int          contact_pairs,
+                           const unsigned int substeps)
   {
     if (!enabled)
       return;
@@ -44,6 +45,8 @@ namespace bfemp
         << "  dofs " << n_dofs;
     if (contact_pairs >= 0)
       out << "  contacts " << contact_pairs;
+    if (substeps > 0)
+      out << "  substeps " << substeps;
     out << std::fixed << std::setprecision(1) << "  wall " << elapsed
         << " s  left ~" << remaining << " s" << std::defaultfloat << std::endl;
   }
@@ -53,7 +56,8 @@ namespace bfemp
   void
   ProgressReporter::report(const unsigned int step,
                            const double       time,
-                           const double       dt)
+                           const double       dt,
+                           const unsigned int substeps)
   {
     if (!enabled)
       return;
@@ -62,8 +66,10 @@ namespace bfemp
       time > 0. ? elapsed * (end_time - time) / time : 0.;
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
-        << std::defaultfloat << std::fixed << std::setprecision(1) << "  wall "
-        << elapsed << " s  left ~" << remaining << " s" << std::defaultfloat
-        << std::endl;
+        << std::defaultfloat;
+    if (substeps > 0)
+      out << "  substeps " << substeps;
+    out << std::fixed << std::setprecision(1) << "  wall " << elapsed
+        << " s  left ~" << remaining << " s" << std::defaultfloat << std::endl;
   }
 } // namespace bfemp

@@ -1,6 +1,8 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/particles/particle_system.h>
 
+#include <cmath>
+
 #include <sstream>
 
 namespace bfemp
@@ -199,7 +201,18 @@ namespace bfemp
               for (auto it = range.begin(); it != range.end(); ++it)
                 {
                   const Point<dim> x = it->get_location();
-                  if (!grid.stencil_inside(x))
+                  if (!std::isfinite(x.norm_square()))
+                    {
+                      if (escaped[s].empty())
+                        escaped[s] =
+                          "particle " + std::to_string(it->get_id()) +
+                          " has a non-finite position: the state became NaN "
+                          "or inf (an explicit step beyond its stability "
+                          "limit, e.g. a CFL number too close to 1 for a "
+                          "stiffening material); reduce the time step or the "
+                          "CFL number";
+                    }
+                  else if (!grid.stencil_inside(x))
                     {
                       if (escaped[s].empty())
                         escaped[s] = "particle " +

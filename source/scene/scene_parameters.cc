@@ -304,12 +304,15 @@ namespace bfemp
                   "a scene needs at least one MPM body or one FEM body "
                   "('number of FEM bodies')");
     contact.check_bodies(bodies.size(), fem_bodies.size());
-    require_input(fem_bodies.empty() || time.is_implicit(),
+    require_input(fem_bodies.empty() || time.is_implicit() ||
+                    time.is_substepped(),
                   "time",
                   "integrator",
-                  time.is_implicit() ? "" : "an explicit integrator",
+                  "an explicit integrator",
                   "FEM bodies are integrated implicitly only: choose "
-                  "'implicit backward Euler' or 'implicit Newmark'");
+                  "'implicit backward Euler', 'implicit Newmark' or "
+                  "'substepped explicit' (FEM bodies take the macro step "
+                  "implicitly)");
   }
 
 

@@ -30,19 +30,51 @@ namespace bfemp
         create_material<dim>(body.material.model, body.material.moduli()));
     create_fem_bodies();
     create_bodies();
-    if (parameters.time.is_implicit())
+    create_integrator();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::create_integrator()
+  {
+    const TimeParameters &time = parameters.time;
+    if (time.is_substepped())
+      {
+        if (time.substepping.own_macro_transfer)
+          {
+            TransferParameters macro = parameters.transfer;
+            macro.scheme             = time.substepping.macro_transfer;
+            macro_transfer =
+              std::make_unique<ParticleGridTransfer<dim>>(grid,
+                                                          macro,
+                                                          materials);
+          }
+        substepped_integrator =
+          std::make_unique<SubsteppedMPM<dim>>(grid,
+                                               particle_system,
+                                               transfer,
+                                               macro_transfer ? *macro_transfer
+                                                              : transfer,
+                                               parameters.boundaries,
+                                               parameters.gravity,
+                                               time.substepping);
+      }
+    if (time.is_implicit() || (time.is_substepped() && !fem_body_list.empty()))
       {
         implicit_integrator = std::make_unique<ImplicitIntegrator<dim>>(
           grid,
           particle_system,
-          transfer,
+          macro_transfer ? *macro_transfer : transfer,
           materials,
           fem_body_list,
           parameters.boundaries,
           parameters.gravity,
-          parameters.time.implicit_scheme(),
+          time.implicit_scheme(),
           parameters.solver,
-          parameters.contact);
+          parameters.contact,
+          substepped_integrator.get());
         // Bodies must start apart (eq. 15): a particle inside an FEM mesh, or
         // on its boundary where the barrier is infinite, has no valid state.
         const unsigned int touching =
@@ -55,14 +87,14 @@ namespace bfemp
             "must start apart; a particle closer than 'contact/activation "
             "distance' feels the barrier from the first step.");
       }
-    else
+    else if (!time.is_substepped())
       explicit_integrator =
         std::make_unique<ExplicitMPM<dim>>(grid,
                                            particle_system,
                                            transfer,
                                            parameters.boundaries,
                                            parameters.gravity,
-                                           parameters.time.integrator);
+                                           time.integrator);
   }
 
 
@@ -90,13 +122,19 @@ namespace bfemp
 
   template <int dim>
   void
-  Simulation<dim>::advance(const double dt, const double time)
+  Simulation<dim>::advance(const double dt,
+                           const double time,
+                           const double max_speed)
   {
+    if (substepped_integrator)
+      last_substeps = substeps_for(dt, max_speed);
     if (implicit_integrator)
       {
-        implicit_integrator->step(dt, time, step + 1);
+        implicit_integrator->step(dt, time, step + 1, last_substeps);
         newton_since_row += implicit_integrator->statistics();
       }
+    else if (substepped_integrator)
+      substepped_integrator->step(dt, time, last_substeps);
     else
       explicit_integrator->step(dt, time);
   }
@@ -178,9 +216,18 @@ namespace bfemp
   double
   Simulation<dim>::cfl_time_scale(const double max_speed) const
   {
-    double wave_speed = 0.;
-    if (parameters.time.is_implicit())
+    if (parameters.time.is_implicit() || parameters.time.is_substepped())
       return grid.lattice().dx / std::max(max_speed, 1e-300);
+    return explicit_time_scale(max_speed);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulation<dim>::explicit_time_scale(const double max_speed) const
+  {
+    double wave_speed = 0.;
     for (unsigned int b = 0; b < materials.size(); ++b)
       wave_speed = std::max(wave_speed,
                             materials[b]->p_wave_speed(
@@ -200,7 +247,8 @@ namespace bfemp
     double                dt         = p.adaptive
                                          ? std::min(p.cfl_number * time_scale, p.maximum_time_step)
                                          : p.time_step;
-    if (!p.is_implicit() && dt / time_scale > p.maximum_cfl_number)
+    if (!p.is_implicit() && !p.is_substepped() &&
+        dt / time_scale > p.maximum_cfl_number)
       {
         std::ostringstream message;
         message << "step " << step + 1 << ", t = " << time
@@ -218,6 +266,37 @@ namespace bfemp
     if (dt > remaining || remaining - dt < 1e-6 * dt)
       dt = remaining;
     return dt;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulation<dim>::substeps_for(const double dt, const double max_speed) const
+  {
+    const TimeParameters::Substepping &s = parameters.time.substepping;
+    const double time_scale              = explicit_time_scale(max_speed);
+    if (s.substeps == 0)
+      return std::max(1u,
+                      static_cast<unsigned int>(
+                        std::ceil(dt / (s.cfl_number * time_scale) - 1e-9)));
+    const double substep_cfl = dt / s.substeps / time_scale;
+    if (substep_cfl > parameters.time.maximum_cfl_number)
+      {
+        std::ostringstream message;
+        message << "step " << step + 1 << ": the macro step " << dt
+                << " s with 'time/substepping/substeps' = " << s.substeps
+                << " gives substeps of CFL number dt / S (c_p + max |v_p|) / "
+                   "dx = "
+                << substep_cfl << " > 'time/maximum CFL number' = "
+                << parameters.time.maximum_cfl_number
+                << ", where explicit MPM is unstable; use at least "
+                << std::ceil(dt /
+                             (parameters.time.maximum_cfl_number * time_scale))
+                << " substeps or 'substeps = 0' (S from 'substep CFL number')";
+        throw SimulationError(message.str());
+      }
+    return s.substeps;
   }
 
 
@@ -313,8 +392,9 @@ namespace bfemp
     if (particle_output)
       particle_output->write(particle_system, time, snapshot);
     if (grid_output)
-      grid_output->write(implicit_integrator
-                           ? implicit_integrator->grid_state()
+      grid_output->write(implicit_integrator ? implicit_integrator->grid_state()
+                         : substepped_integrator
+                           ? substepped_integrator->grid_state()
                            : explicit_integrator->grid_state(),
                          time,
                          snapshot);
@@ -405,9 +485,11 @@ namespace bfemp
     DiagnosticsWriter<dim> diagnostics_writer =
       with_contact ? DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
                                             parameters.bodies.size(),
-                                            parameters.fem_bodies.size())
+                                            parameters.fem_bodies.size(),
+                                            parameters.time.is_substepped())
                    : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
-                                            parameters.time.is_implicit());
+                                            implicit_integrator != nullptr,
+                                            parameters.time.is_substepped());
     BodyDiagnosticsWriter<dim> body_writer(output_folder + "/bodies.csv",
                                            parameters.bodies.size(),
                                            parameters.fem_bodies.size());
@@ -435,7 +517,7 @@ namespace bfemp
     while (time < run.end_time)
       {
         const double dt = next_time_step(time, state.max_speed);
-        advance(dt, time);
+        advance(dt, time, state.max_speed);
         time         = (dt == run.end_time - time) ? run.end_time : time + dt;
         current_time = time;
         ++step;
@@ -455,7 +537,8 @@ namespace bfemp
               newton_since_row,
               implicit_integrator ? implicit_integrator->n_dofs() : 0,
               implicit_integrator ? implicit_integrator->contact_statistics()
-                                  : ContactStatistics<dim>());
+                                  : ContactStatistics<dim>(),
+              last_substeps);
             newton_since_row = NewtonStatistics();
             write_body_diagnostics(body_writer);
           }
@@ -482,7 +565,8 @@ namespace bfemp
                             implicit_integrator->statistics().iterations,
                             implicit_integrator->n_dofs(),
                             contact.active ? static_cast<int>(contact.pairs)
-                                           : -1);
+                                           : -1,
+                            last_substeps);
             if (!contact.friction_converged)
               std::cerr << "bfemp: warning: step " << step
                         << ": friction not converged after "
@@ -493,7 +577,7 @@ namespace bfemp
                         << std::endl;
           }
         else
-          progress.report(step, time, dt);
+          progress.report(step, time, dt, last_substeps);
       }
     if (!run.test_mode)
       console << "bfemp: finished " << step << " steps in "

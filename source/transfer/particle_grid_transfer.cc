@@ -9,7 +9,7 @@ namespace bfemp
     const TransferParameters                          &parameters,
     const std::vector<std::unique_ptr<Material<dim>>> &materials)
     : grid(grid)
-    , parameters(parameters)
+    , transfer_parameters(parameters)
     , materials(materials)
   {}
 
@@ -25,7 +25,8 @@ namespace bfemp
   {
     using Layout                = ParticleLayout<dim>;
     const Lattice<dim> &lattice = grid.lattice();
-    const bool affine = parameters.scheme == TransferParameters::Scheme::apic;
+    const bool          affine =
+      transfer_parameters.scheme == TransferParameters::Scheme::apic;
 
     particles.for_each_scattering([&](auto &particle) {
       const ArrayView<const double> p = particle.get_properties();
@@ -107,8 +108,8 @@ namespace bfemp
     using Layout                  = ParticleLayout<dim>;
     using Scheme                  = TransferParameters::Scheme;
     const Lattice<dim>  &lattice  = grid.lattice();
-    const Scheme         scheme   = parameters.scheme;
-    const double         theta    = parameters.pic_blend;
+    const Scheme         scheme   = transfer_parameters.scheme;
+    const double         theta    = transfer_parameters.pic_blend;
     const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
     // D_p^-1 of Table 1 is a constant multiple of I for degree 2 and 3.
     const double inverse_inertia = degree == 2 ? 4. / (lattice.dx * lattice.dx)
@@ -268,6 +269,15 @@ namespace bfemp
           D[d][d]        = dx2 * t * (1. - t);
         }
     return D;
+  }
+
+
+
+  template <int dim>
+  const TransferParameters &
+  ParticleGridTransfer<dim>::parameters() const
+  {
+    return transfer_parameters;
   }
 
 

@@ -25,6 +25,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "diagnostics_csv.h"
@@ -102,6 +103,39 @@ namespace bar_vibration
         x -= value / derivative;
       }
     return x;
+  }
+
+  /**
+   * The period of a single mode from its energy histories, and the number
+   * of zero crossings of E_kin - E_el it used: the crossings (cubic
+   * interpolation) lie T / 4 apart, so a least-squares line through
+   * (j, crossing j) has the slope T / 4.
+   */
+  inline std::pair<double, unsigned int>
+  measured_period(const std::vector<double> &t,
+                  const std::vector<double> &kinetic,
+                  const std::vector<double> &elastic)
+  {
+    std::vector<double> s(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i)
+      s[i] = kinetic[i] - elastic[i];
+
+    std::vector<double> crossings;
+    for (std::size_t i = 0; i + 1 < t.size(); ++i)
+      if ((s[i] > 0.) != (s[i + 1] > 0.))
+        crossings.push_back(cubic_root(t, s, i));
+
+    const double n  = crossings.size();
+    double       sj = 0., st = 0., sjj = 0., sjt = 0.;
+    for (unsigned int j = 0; j < crossings.size(); ++j)
+      {
+        sj += j;
+        st += crossings[j];
+        sjj += double(j) * j;
+        sjt += j * crossings[j];
+      }
+    const double slope = (n * sjt - sj * st) / (n * sjj - sj * sj);
+    return {4. * slope, static_cast<unsigned int>(crossings.size())};
   }
 
   struct Result
@@ -182,34 +216,15 @@ namespace bar_vibration
     const auto columns =
       read_columns("results/" + name + "/diagnostics.csv",
                    {"time", "kinetic_energy", "elastic_energy"});
-    const std::vector<double> &t = columns[0];
-    std::vector<double>        s(t.size());
-    for (std::size_t i = 0; i < t.size(); ++i)
-      s[i] = columns[1][i] - columns[2][i];
-
-    std::vector<double> crossings;
-    for (std::size_t i = 0; i + 1 < t.size(); ++i)
-      if ((s[i] > 0.) != (s[i + 1] > 0.))
-        crossings.push_back(cubic_root(t, s, i));
-
-    // Least-squares line through (j, crossing j): the slope is T / 4.
-    const double n  = crossings.size();
-    double       sj = 0., st = 0., sjj = 0., sjt = 0.;
-    for (unsigned int j = 0; j < crossings.size(); ++j)
-      {
-        sj += j;
-        st += crossings[j];
-        sjj += double(j) * j;
-        sjt += j * crossings[j];
-      }
-    const double slope = (n * sjt - sj * st) / (n * sjj - sj * sj);
+    const auto [period, n_crossings] =
+      measured_period(columns[0], columns[1], columns[2]);
 
     Result result;
     result.n_cells     = n_cells;
     result.n_particles = simulation.particles().n_particles();
-    result.n_steps     = t.size() - 1;
-    result.n_crossings = crossings.size();
-    result.period      = 4. * slope;
+    result.n_steps     = columns[0].size() - 1;
+    result.n_crossings = n_crossings;
+    result.period      = period;
     result.error       = (result.period - exact_period()) / exact_period();
     return result;
   }

@@ -171,7 +171,14 @@ namespace bfemp
     bool                     project = true;
     /** FEM unified nodes coupled to each particle in the pattern. */
     mutable std::vector<std::vector<unsigned int>> registered;
-    mutable double                                 last_magnitude = 0.;
+    /**
+     * Particles whose grid stencil is a clique of the pattern. MPM
+     * elasticity couples a stencil anyway, but without it (substepped MPM)
+     * a particle touching only a kinematic FEM body registers no FEM node,
+     * and its barrier Hessian still couples its stencil nodes.
+     */
+    mutable std::vector<bool> stencil_registered;
+    mutable double            last_magnitude = 0.;
   };
 } // namespace bfemp
 

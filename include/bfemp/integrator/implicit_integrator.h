@@ -9,6 +9,7 @@
 #include <bfemp/contact/friction_term.h>
 #include <bfemp/fem/fem_body.h>
 #include <bfemp/grid/grid_state.h>
+#include <bfemp/integrator/substepped_mpm.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/solver/dof_space.h>
@@ -44,6 +45,16 @@ namespace bfemp
    *      tolerance holds with the updated friction (lines 6-10)
    *   -> v^{n+1} = v^n + dt ((1 - gamma) a^n + gamma a^{n+1}) (eq. 21)
    *   -> FEM nodes move; G2P of x~, v~ and F (Tables 1-3).
+   *
+   * With @p substepped_mpm the MPM bodies are not part of the potential's
+   * elasticity: their S explicit substeps run first, and the reconstructed
+   * macro-step grid velocity v*_k (seed 003 eq. 5) is the grid nodes' start
+   * velocity, with gravity and elastic forces already in it. The solve then
+   * adds only what contact and boundaries change, applying the contact
+   * force to the grid nodes as a force constant over the substeps: their
+   * mass enters the potential as m_k / c and their velocity changes by
+   * (u - u^) / (c dt), c = SubsteppedMPM::constant_force_ratio(S). The
+   * macro step is backward Euler (doc/substepping.md).
    */
   template <int dim>
   class ImplicitIntegrator
@@ -59,11 +70,18 @@ namespace bfemp
       const Tensor<1, dim>                              &gravity,
       const TimeParameters::ImplicitScheme              &scheme,
       const SolverParameters                            &solver,
-      const ContactParameters                           &contact);
+      const ContactParameters                           &contact,
+      SubsteppedMPM<dim> *substepped_mpm = nullptr);
 
-    /** Advances from @p time to time + dt; throws SimulationError. */
+    /**
+     * Advances from @p time to time + dt; throws SimulationError. With
+     * substepped MPM bodies, they take @p substeps explicit substeps.
+     */
     void
-    step(const double dt, const double time, const unsigned int step_number);
+    step(const double       dt,
+         const double       time,
+         const unsigned int step_number,
+         const unsigned int substeps = 0);
 
     /** The grid fields of the last step (for output). */
     const GridState<dim> &
@@ -105,7 +123,11 @@ namespace bfemp
     Vector<double>
     start_acceleration() const;
 
-    /** u^ = dt v^n + alpha (1 - 2 beta) dt^2 a^n + 2 alpha beta dt^2 g. */
+    /**
+     * u^ = dt v^n + alpha (1 - 2 beta) dt^2 a^n + 2 alpha beta dt^2 g; grid
+     * nodes of substepped MPM bodies advance by their substeps' dt v*_k
+     * instead of dt v^n.
+     */
     Vector<double>
     predictor(const Vector<double> &acceleration, const double dt) const;
 
@@ -139,6 +161,22 @@ namespace bfemp
                            const double       dt,
                            const std::string &label);
 
+    /**
+     * The acceleration the predictor and eq. 21 add for @p node: gravity,
+     * except for grid nodes of substepped MPM bodies, whose start velocity
+     * v*_k already holds it.
+     */
+    Tensor<1, dim>
+    node_gravity(const unsigned int node) const;
+
+    /** c for @p node: constant_force_ratio for substepped grid nodes. */
+    double
+    node_force_ratio(const unsigned int node) const;
+
+    /** dt v^n, or the substeps' dt v*_k for their grid nodes. */
+    Tensor<1, dim>
+    free_advance(const unsigned int node, const double dt) const;
+
     /** Records the contact state at the step's solution u. */
     void
     measure_contact(const Vector<double> &u);
@@ -151,6 +189,7 @@ namespace bfemp
     const Tensor<1, dim>                        gravity;
     const TimeParameters::ImplicitScheme        scheme;
     const bool                                  with_mpm;
+    SubsteppedMPM<dim>                         *substepped_mpm;
 
     DofSpace<dim>                         dofs;
     const ContactParameters               contact_parameters;
@@ -167,12 +206,15 @@ namespace bfemp
 
     GridState<dim>      state;
     std::vector<double> node_mass;
-    Vector<double>      start_velocity;
+    /** v^n; for grid nodes of substepped MPM bodies their v~_k. */
+    Vector<double> start_velocity;
     /** Velocity of each constraint's target, by constraint index. */
     std::vector<Tensor<1, dim>> constraint_velocity;
     double                      scale = 0.;
-    NewtonStatistics            last_statistics;
-    ContactStatistics<dim>      last_contact;
+    /** c of the substepped grid nodes in this step (1 otherwise). */
+    double                 constant_force_ratio = 1.;
+    NewtonStatistics       last_statistics;
+    ContactStatistics<dim> last_contact;
   };
 } // namespace bfemp
 

@@ -13,7 +13,8 @@ namespace bfemp
   /**
    * diagnostics.csv: one row per diagnosed step with step, time, dt,
    * energies, linear and angular momentum, mass, min J, max speed and wall
-   * time, and the particles inside level-set obstacles. Rows are written
+   * time, and the particles inside level-set obstacles (and, last, the
+   * substeps of a substepped macro step). Rows are written
    * whole and flushed, so the file always ends with a
    * complete row.
    */
@@ -27,7 +28,9 @@ namespace bfemp
      * det F bound hits), the last residual ||p||_inf / dt, the unknowns and
      * the assembly, factorization, solve and line-search times.
      */
-    DiagnosticsWriter(const std::string &path, const bool implicit = false);
+    DiagnosticsWriter(const std::string &path,
+                      const bool         implicit   = false,
+                      const bool         substepped = false);
 
     /**
      * Scenes with particle-mesh contact add its columns: pairs within dhat,
@@ -41,7 +44,8 @@ namespace bfemp
      */
     DiagnosticsWriter(const std::string &path,
                       const unsigned int n_mpm_bodies,
-                      const unsigned int n_fem_bodies);
+                      const unsigned int n_fem_bodies,
+                      const bool         substepped = false);
 
     void
     write(const unsigned int            step,
@@ -49,9 +53,10 @@ namespace bfemp
           const double                  dt,
           const StepDiagnostics<dim>   &diagnostics,
           const double                  wall_time,
-          const NewtonStatistics       &newton  = NewtonStatistics(),
-          const unsigned int            n_dofs  = 0,
-          const ContactStatistics<dim> &contact = ContactStatistics<dim>());
+          const NewtonStatistics       &newton   = NewtonStatistics(),
+          const unsigned int            n_dofs   = 0,
+          const ContactStatistics<dim> &contact  = ContactStatistics<dim>(),
+          const unsigned int            substeps = 0);
 
   private:
     void
@@ -60,8 +65,10 @@ namespace bfemp
     std::ofstream file;
     const bool    implicit;
     const bool    with_contact = false;
-    unsigned int  n_mpm_bodies = 0;
-    unsigned int  n_fem_bodies = 0;
+    /** A last column: the explicit substeps S of the macro step. */
+    const bool   substepped   = false;
+    unsigned int n_mpm_bodies = 0;
+    unsigned int n_fem_bodies = 0;
   };
 } // namespace bfemp
 

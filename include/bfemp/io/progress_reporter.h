@@ -8,7 +8,7 @@ namespace bfemp
 {
   /**
    * One line per step on the console: step, time, dt (Newton iterations and
-   * unknowns for implicit steps), wall time and an
+   * unknowns for implicit steps, substeps of substepped MPM), wall time and an
    * estimate of the wall time to the end (from the average simulated time per
    * wall second so far). Silent in quiet and test mode.
    */
@@ -20,7 +20,10 @@ namespace bfemp
                      const bool    enabled);
 
     void
-    report(const unsigned int step, const double time, const double dt);
+    report(const unsigned int step,
+           const double       time,
+           const double       dt,
+           const unsigned int substeps = 0);
 
     /** The line of an implicit step: also Newton iterations and unknowns. */
     void
@@ -29,7 +32,8 @@ namespace bfemp
            const double       dt,
            const unsigned int newton_iterations,
            const unsigned int n_dofs,
-           const int          contact_pairs = -1);
+           const int          contact_pairs = -1,
+           const unsigned int substeps      = 0);
 
     /** Wall seconds since construction. */
     double

@@ -5,6 +5,7 @@
 #include <bfemp/grid/background_grid.h>
 #include <bfemp/integrator/explicit_mpm.h>
 #include <bfemp/integrator/implicit_integrator.h>
+#include <bfemp/integrator/substepped_mpm.h>
 #include <bfemp/io/body_diagnostics_writer.h>
 #include <bfemp/io/diagnostics_writer.h>
 #include <bfemp/io/fem_output.h>
@@ -76,9 +77,25 @@ namespace bfemp
     double
     cfl_time_scale(const double max_speed) const;
 
+    /** dx / (c_p + max |v_p|), the stability time scale of explicit MPM. */
+    double
+    explicit_time_scale(const double max_speed) const;
+
+    /**
+     * S of the substepped integrator's next macro step of size @p dt:
+     * 'substeps', or the least S that keeps 'substep CFL number'. Throws if
+     * a fixed S makes the substep unstable.
+     */
+    unsigned int
+    substeps_for(const double dt, const double max_speed) const;
+
     /** One step of the chosen integrator. */
     void
-    advance(const double dt, const double time);
+    advance(const double dt, const double time, const double max_speed);
+
+    /** Builds the integrator the parameters choose. */
+    void
+    create_integrator();
 
     /** The next dt; throws if a fixed dt breaks the CFL limit. */
     double
@@ -109,9 +126,14 @@ namespace bfemp
     std::vector<std::unique_ptr<Material<dim>>> materials;
     ParticleSystem<dim>                         particle_system;
     ParticleGridTransfer<dim>                   transfer;
-    std::vector<std::unique_ptr<FemBody<dim>>>  fem_body_list;
-    std::unique_ptr<ExplicitMPM<dim>>           explicit_integrator;
-    std::unique_ptr<ImplicitIntegrator<dim>>    implicit_integrator;
+    /** The substepped integrator's own macro-step transfer, if it has one. */
+    std::unique_ptr<ParticleGridTransfer<dim>> macro_transfer;
+    std::vector<std::unique_ptr<FemBody<dim>>> fem_body_list;
+    std::unique_ptr<ExplicitMPM<dim>>          explicit_integrator;
+    std::unique_ptr<SubsteppedMPM<dim>>        substepped_integrator;
+    std::unique_ptr<ImplicitIntegrator<dim>>   implicit_integrator;
+    /** Substeps of the last macro step (substepped integrator). */
+    unsigned int last_substeps = 0;
     /** Newton statistics since the last diagnostics row. */
     NewtonStatistics                     newton_since_row;
     std::string                          output_folder;

@@ -72,6 +72,10 @@ namespace bfemp
     Tensor<2, dim>
     apic_inertia(const Point<dim> &x) const;
 
+    /** The scheme and blend this transfer was built with. */
+    const TransferParameters &
+    parameters() const;
+
   private:
     template <int degree>
     void
@@ -88,7 +92,7 @@ namespace bfemp
            const double          explicit_dt) const;
 
     const BackgroundGrid<dim>                         &grid;
-    const TransferParameters                           parameters;
+    const TransferParameters                           transfer_parameters;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
   };
 } // namespace bfemp
