@@ -15,6 +15,10 @@
 //    it (measured 0.076 v_0 / 2: 0.226 vs 0.150 m/s), 3x closer than the
 //    fully implicit run at the same dt (-0.387 m/s). A converged pair of
 //    runs (dt / 256) gives 0.177 (substepped) and 0.175 (implicit).
+//  - hit in 3D (dx = 0.02, slab edge 0.04, block 1 kg, slab 6 kg, S = 19):
+//    contact happened, no particle inside, momentum kept, and the block
+//    leaves the slab faster than the slab moves (measured +0.75 against
+//    -0.46 m/s).
 //  - rest: gravity -10, slab bottom fixed, block released 3 mm above it
 //    (0.6 s, 120 steps). Checked: no particle inside the slab, the contact
 //    force on the slab over the last 0.1 s is the block's weight within
@@ -82,6 +86,34 @@ namespace
     prm << "end\n";
     return prm.str();
   }
+
+  /** The hit scene in 3D, coarser: dx = 0.02, slab edge 0.04. */
+  std::string
+  scene_3d(const std::string &name)
+  {
+    std::ostringstream prm;
+    prm << std::setprecision(17) << head(3, 1, 1, name, 0.1)
+        << time_text("substepped explicit", 5e-3) << solver(eps_d, false)
+        << "subsection grid\n  set lower corner = -0.3, -0.2, -0.15\n"
+           "  set upper corner = 0.3, 0.4, 0.15\n  set cell size = 0.02\n"
+           "end\n"
+           "subsection gravity\n  set acceleration = 0, 0, 0\nend\n"
+        << "subsection contact\n  set activation distance = " << dhat
+        << "\n  set barrier stiffness = 1e6\n  set friction coefficient = "
+           "0\nend\n"
+           "subsection boundaries\n  set walls = none\nend\n"
+        << mpm_box(0,
+                   "-0.05, 0.12, -0.05",
+                   "0.05, 0.22, 0.05",
+                   "0, -2, 0",
+                   material("neo-Hookean", youngs, 0.3, density))
+        << "subsection fem body 0\n"
+        << material("neo-Hookean", youngs, 0.3, density)
+        << "  subsection mesh\n    set source = rectangle\n"
+           "    set lower corner = -0.15, 0, -0.1\n    set upper corner = "
+           "0.15, 0.1, 0.1\n    set target edge length = 0.04\n  end\nend\n";
+    return prm.str();
+  }
 } // namespace
 
 int
@@ -145,6 +177,30 @@ main()
                 ? "yes"
                 : "NO")
           << std::endl;
+
+  // hit in 3D
+  write("hit_3d.prm", scene_3d("hit_3d"));
+  bfemp_tests::check(run<3>("hit_3d.prm").error.empty(), "hit_3d runs");
+  const auto c3 =
+    columns("hit_3d", {"momentum_y", "particles_in_fem", "contact_pairs"});
+  const auto b3 =
+    bfemp_tests::read_columns("results/hit_3d/bodies.csv",
+                              {"mpm0_com_velocity_y", "fem0_com_velocity_y"});
+  double drift_3d  = 0.;
+  bool   inside_3d = false, touched_3d = false;
+  for (std::size_t k = 0; k < c3[0].size(); ++k)
+    {
+      drift_3d   = std::max(drift_3d, std::abs(c3[0][k] - c3[0][0]));
+      inside_3d  = inside_3d || c3[1][k] > 0.;
+      touched_3d = touched_3d || c3[2][k] > 0.;
+    }
+  deallog << "hit 3D: contact happened " << (touched_3d ? "yes" : "NO")
+          << ", particles inside the slab in some row "
+          << (inside_3d ? "YES" : "no")
+          << ", total momentum kept to 20 steps x M eps_d "
+          << (drift_3d <= 20. * 7. * eps_d ? "yes" : "NO")
+          << ", the block leaves the slab "
+          << (b3[0].back() > b3[1].back() ? "yes" : "NO") << std::endl;
 
   // rest
   write("rest.prm", scene("rest", "substepped explicit", dt, 0.6, true));
