@@ -32,6 +32,7 @@ namespace bfemp
     , with_friction(with_contact && contact.has_friction())
     , fem_elasticity(fem_bodies, dofs)
     , mpm_elasticity(grid, particles, materials, dofs)
+    , mpm_correction_elasticity(mpm_elasticity)
     , potential(dofs)
     , newton(solver)
   {
@@ -41,8 +42,10 @@ namespace bfemp
           return !b->is_kinematic();
         }))
       terms.push_back(&fem_elasticity);
-    if (with_mpm && !substepped_mpm)
-      terms.push_back(&mpm_elasticity);
+    if (with_mpm)
+      terms.push_back(
+        substepped_mpm ? &mpm_correction_elasticity
+                       : static_cast<const EnergyTerm<dim> *>(&mpm_elasticity));
     if (with_contact)
       {
         contact_geometry = std::make_unique<ContactGeometry<dim>>(grid,
@@ -451,6 +454,8 @@ namespace bfemp
     const Vector<double> acceleration = start_acceleration();
     const Vector<double> predicted    = predictor(acceleration, dt);
     inertia.reinit(node_mass, predicted);
+    if (with_mpm && substepped_mpm)
+      mpm_correction_elasticity.set_reference(predicted);
 
     // Algorithm 1 lines 3, 5: start from x^n, friction lagged there. The
     // Newton solver moves constrained nodes and obstacles onto their

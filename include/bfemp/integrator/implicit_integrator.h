@@ -18,6 +18,7 @@
 #include <bfemp/solver/inertia_term.h>
 #include <bfemp/solver/mpm_elasticity_term.h>
 #include <bfemp/solver/newton_solver.h>
+#include <bfemp/solver/relative_energy_term.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
 
 #include <map>
@@ -49,12 +50,15 @@ namespace bfemp
    * With @p substepped_mpm the MPM bodies are not part of the potential's
    * elasticity: their S explicit substeps run first, and the reconstructed
    * macro-step grid velocity v*_k (seed 003 eq. 5) is the grid nodes' start
-   * velocity, with gravity and elastic forces already in it. The solve then
-   * adds only what contact and boundaries change, applying the contact
-   * force to the grid nodes as a force constant over the substeps: their
-   * mass enters the potential as m_k / c and their velocity changes by
-   * (u - u^) / (c dt), c = SubsteppedMPM::constant_force_ratio(S). The
-   * macro step is backward Euler (doc/substepping.md).
+   * velocity, with gravity and elastic forces already in it. The MPM
+   * elasticity enters the potential only relative to its linearization at
+   * the substeps' prediction u* (RelativeEnergyTerm): without contact the
+   * solve returns u*, with contact the bodies resist the correction with
+   * their stiffness. The contact force acts on the grid nodes as a force
+   * constant over the substeps: their mass enters the potential as m_k / c
+   * and their velocity changes by (u - u^) / (c dt), c =
+   * SubsteppedMPM::constant_force_ratio(S). The macro step is backward
+   * Euler (doc/substepping.md).
    */
   template <int dim>
   class ImplicitIntegrator
@@ -191,13 +195,15 @@ namespace bfemp
     const bool                                  with_mpm;
     SubsteppedMPM<dim>                         *substepped_mpm;
 
-    DofSpace<dim>                         dofs;
-    const ContactParameters               contact_parameters;
-    const bool                            with_contact;
-    const bool                            with_friction;
-    InertiaTerm<dim>                      inertia;
-    FemElasticityTerm<dim>                fem_elasticity;
-    MpmElasticityTerm<dim>                mpm_elasticity;
+    DofSpace<dim>           dofs;
+    const ContactParameters contact_parameters;
+    const bool              with_contact;
+    const bool              with_friction;
+    InertiaTerm<dim>        inertia;
+    FemElasticityTerm<dim>  fem_elasticity;
+    MpmElasticityTerm<dim>  mpm_elasticity;
+    /** MPM elasticity relative to the substeps' prediction (substepped). */
+    RelativeEnergyTerm<dim>               mpm_correction_elasticity;
     std::unique_ptr<ContactGeometry<dim>> contact_geometry;
     std::unique_ptr<BarrierTerm<dim>>     barrier;
     std::unique_ptr<FrictionTerm<dim>>    friction;
