@@ -22,17 +22,18 @@ Needs numpy, matplotlib and vtk (use /usr/bin/python3); the snapshots are
 drawn with matplotlib from the VTU files read by VTK (no display needed).
 """
 import os
-import re
 import sys
 
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import matplotlib.tri as mtri
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_data import csv, pvd, read_grid  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "output"
 PREFIX = sys.argv[2] if len(sys.argv) > 2 else "buckling_mu_"
@@ -42,23 +43,6 @@ os.makedirs(IMG, exist_ok=True)
 SUFFIX = sys.argv[4] if len(sys.argv) > 4 else ""
 PLATE_SPEED = 1.0
 MUS = [("0", 0.0), ("0_2", 0.2), ("0_5", 0.5)]
-
-
-def csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
-
-
-def read_vtu(path):
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    return r.GetOutput()
-
-
-def snapshots(folder, stem):
-    text = open(os.path.join(folder, stem + ".pvd")).read()
-    return [(float(t), os.path.join(folder, f))
-            for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
 
 
 def onset(bodies):
@@ -115,15 +99,15 @@ fig, axes = plt.subplots(len(runs), len(instants), squeeze=False,
                          figsize=(2.6 * len(instants), 1.6 * len(runs)))
 vmax = 2e5
 for row, (tag, r) in enumerate(runs.items()):
-    parts = snapshots(r["folder"], "particles")
-    fem = snapshots(r["folder"], "fem_body_0")
+    parts = pvd(os.path.join(r["folder"], "particles.pvd"))
+    fem = pvd(os.path.join(r["folder"], "fem_body_0.pvd"))
     for col, u in enumerate(instants):
         ax = axes[row, col]
         k = int(np.argmin([abs(PLATE_SPEED * s[0] - u) for s in parts]))
-        g = read_vtu(parts[k][1])
+        g = read_grid(parts[k][1])
         x = vtk_to_numpy(g.GetPoints().GetData())
         vm = vtk_to_numpy(g.GetPointData().GetArray("von_mises"))
-        f = read_vtu(fem[k][1])
+        f = read_grid(fem[k][1])
         y = vtk_to_numpy(f.GetPoints().GetData())
         cells = vtk_to_numpy(f.GetCells().GetConnectivityArray()).reshape(-1, 3)
         fvm = vtk_to_numpy(f.GetPointData().GetArray("von_mises"))[cells].mean(axis=1)

@@ -26,13 +26,15 @@ import re
 import sys
 
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import matplotlib.tri as mtri
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_data import csv, pvd, read_grid  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "output"
 IMG = sys.argv[2] if len(sys.argv) > 2 else os.path.normpath(os.path.join(
@@ -45,24 +47,6 @@ def run_folder(variant):
         if os.path.isdir(os.path.join(OUT, name)):
             return os.path.join(OUT, name)
     sys.exit(f"no run folder sine_wave_{variant}[_reduced] in {OUT}")
-
-
-def csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
-
-
-def read_vtu(path):
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    return r.GetOutput()
-
-
-def snapshots(folder, stem):
-    """(time, file) of a run's PVD series."""
-    text = open(os.path.join(folder, stem + ".pvd")).read()
-    return [(float(t), os.path.join(folder, f))
-            for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
 
 
 def prm_text(path):
@@ -139,8 +123,8 @@ fig.savefig(os.path.join(IMG, "sine_wave_penetration.png"), dpi=80)
 down = t_side - frames[0][0]
 instants = [0., t_side, 0.5 * (t_side + t_up), t_up,
             t_up + 0.5 * down, t_up + 0.75 * down]
-series = {v: snapshots(f, "particles") for v, f in (("b", bfemp), ("l", level))}
-fem = snapshots(bfemp, "fem_body_0")
+series = {v: pvd(os.path.join(f, "particles.pvd")) for v, f in (("b", bfemp), ("l", level))}
+fem = pvd(os.path.join(bfemp, "fem_body_0.pvd"))
 c0 = offset(level)
 vmax = 2e5
 fig, axes = plt.subplots(2, len(instants), figsize=(2.3 * len(instants), 4.6))
@@ -149,14 +133,14 @@ for row, (v, folder) in enumerate((("b", bfemp), ("l", level))):
         ax = axes[row, col]
         k = int(np.argmin([abs(s[0] - t) for s in series[v]]))
         tk = series[v][k][0]
-        g = read_vtu(series[v][k][1])
+        g = read_grid(series[v][k][1])
         x = vtk_to_numpy(g.GetPoints().GetData())
         vm = vtk_to_numpy(g.GetPointData().GetArray("von_mises"))
         sc = ax.scatter(x[:, 0], x[:, 1], c=vm, s=1.5, cmap="viridis",
                         vmin=0, vmax=vmax, rasterized=True)
         u = displacement(frames, tk)
         if v == "b":
-            f = read_vtu(fem[k][1])
+            f = read_grid(fem[k][1])
             y = vtk_to_numpy(f.GetPoints().GetData())
             cells = vtk_to_numpy(f.GetCells().GetConnectivityArray()).reshape(-1, 3)
             ax.tripcolor(mtri.Triangulation(y[:, 0], y[:, 1], cells),

@@ -1,8 +1,27 @@
 """Readers of bfemp run folders shared by the experiment plot scripts:
-the (time, file) list of a PVD series and the points, cells and von Mises
-stress of one VTU file. Needs the vtk Python module (Debian: python3-vtk9)."""
+diagnostics.csv / bodies.csv as a numpy record array, the (time, file) list
+of a PVD series, and one VTU file as VTK's unstructured grid or as its
+points, cells and von Mises stress. Needs numpy and the vtk Python module
+(Debian: python3-numpy, python3-vtk9)."""
 import os
 import xml.etree.ElementTree as ET
+
+
+def csv(path):
+    """A bfemp CSV file as a numpy record array (columns by header name)."""
+    import numpy as np
+
+    return np.genfromtxt(path, delimiter=",", names=True)
+
+
+def read_grid(path):
+    """The vtkUnstructuredGrid of a VTU file."""
+    import vtk
+
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
 
 
 def pvd(path):
@@ -16,13 +35,9 @@ def pvd(path):
 def read_vtu(path):
     """points (x, y), cell connectivity and the point and cell von Mises
     arrays (None where the file has none) of a 2D VTU file."""
-    import vtk
     from vtk.util.numpy_support import vtk_to_numpy
 
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
+    grid = read_grid(path)
     points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
     cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()) if hasattr(
         grid.GetCells(), "GetConnectivityArray") else None
