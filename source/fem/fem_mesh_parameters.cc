@@ -72,7 +72,9 @@ namespace bfemp
                       "geometry (.geo, meshed by the gmsh binary with "
                       "-clmax = 'target edge length'). Physical groups of "
                       "boundary lines/faces become boundary ids. A relative "
-                      "path is relative to the prm file's directory.");
+                      "path is relative to the directory of the prm file "
+                      "that sets this entry (also when that file is "
+                      "included from elsewhere).");
     prm.declare_entry("rotation angle",
                       "0",
                       Patterns::Double(),
@@ -175,7 +177,7 @@ namespace bfemp
                           "file",
                           file,
                           "no such file (a relative path is relative to the "
-                          "prm file's directory '" +
+                          "directory of the prm file that sets it, '" +
                             prm_directory + "')");
             break;
           }

@@ -1,5 +1,6 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/parameter_tools.h>
+#include <bfemp/base/prm_entry_origins.h>
 #include <bfemp/scene/scene_parameters.h>
 
 #include <cctype>
@@ -290,11 +291,15 @@ namespace bfemp
     solver.parse_parameters(prm);
     contact.parse_parameters(prm);
     fem_bodies.resize(prm.get_integer("number of FEM bodies"));
+    const PrmEntryOrigins origins(file);
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
       {
         const std::string name = parameter_tools::numbered("fem body", b);
         prm.enter_subsection(name);
-        fem_bodies[b].parse_parameters(prm, name, directory);
+        fem_bodies[b].parse_parameters(prm,
+                                       name,
+                                       origins.directory_of({name, "mesh"},
+                                                            "file"));
         prm.leave_subsection();
       }
     require_input(!bodies.empty() || !fem_bodies.empty(),
@@ -319,12 +324,10 @@ namespace bfemp
 
   template <int dim>
   void
-  SceneParameters<dim>::read(const std::string &file)
+  SceneParameters<dim>::read(const std::string &prm_file)
   {
+    file = prm_file;
     // Settle the counts of numbered subsections with lenient passes.
-    directory = std::filesystem::path(file).parent_path().string();
-    if (directory.empty())
-      directory = ".";
     std::vector<unsigned int> primitives(1, 1);
     unsigned int              n_level_sets = 0, n_fem_bodies = 0;
     for (unsigned int pass = 0;; ++pass)

@@ -38,10 +38,7 @@ namespace
             name +
             "\n  set quiet = true\nend\n"
             "subsection output\n  set directory = results\n"
-            "  set write particles = false\n  set write grid = false\nend\n"
-            // A relative mesh file is relative to the including prm file.
-            "subsection fem body 0\n  subsection mesh\n    set file = " +
-            dir + "fem_box_N" + std::to_string(n) + ".geo\n  end\nend\n");
+            "  set write particles = false\n  set write grid = false\nend\n");
     const Outcome<2> outcome = run<2>(name + ".prm");
     bfemp_tests::check(outcome.error.empty(), name + " ran: " + outcome.error);
 

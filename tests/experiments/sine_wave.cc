@@ -73,9 +73,6 @@ namespace
         << end_time
         << "\n  set diagnostics interval = 1\n"
            "  set write particles = false\n  set write grid = false\nend\n";
-    if (variant == "bfemp")
-      prm << "subsection fem body 0\n  subsection mesh\n    set file = "
-          << directory << "sine_wave_boundary.geo\n  end\nend\n";
     return prm.str();
   }
 

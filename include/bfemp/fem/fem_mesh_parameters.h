@@ -62,8 +62,8 @@ namespace bfemp
      *  generator (rectangle subdivisions, gmsh -clmax). */
     double target_edge_length = 0.;
 
-    /** Entry "file", resolved against the prm file's directory: the path
-     *  that is opened. Empty unless source == file. */
+    /** Entry "file", resolved against the directory of the prm file that
+     *  sets it: the path that is opened. Empty unless source == file. */
     std::string file;
 
     /** Entry "rotation angle" [rad]. */
@@ -78,9 +78,9 @@ namespace bfemp
     /**
      * Reads the entries of the current subsection and checks them. @p where
      * names the subsection path for messages (e.g. "fem body 0/mesh");
-     * @p prm_directory is the directory of the prm file, against which a
-     * relative "file" is resolved. Throws an InputError naming subsection,
-     * entry, value and what is allowed.
+     * @p prm_directory is the directory of the prm file that sets "file",
+     * against which a relative "file" is resolved. Throws an InputError naming
+     * subsection, entry, value and what is allowed.
      */
     void
     parse_parameters(ParameterHandler  &prm,

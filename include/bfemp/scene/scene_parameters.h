@@ -41,12 +41,15 @@ namespace bfemp
     std::vector<FemBodyParameters<dim>> fem_bodies;
     SolverParameters                    solver;
     ContactParameters                   contact;
-    /** Directory of the prm file: relative mesh files are found there. */
-    std::string directory = ".";
+    /**
+     * The prm file read. A relative mesh file is resolved against the
+     * directory of the file (this one or one it includes) that names it.
+     */
+    std::string file;
 
     /** Reads and checks @p file; throws InputError naming file and entry. */
     void
-    read(const std::string &file);
+    read(const std::string &prm_file);
 
     /** Declares all entries for the given counts of numbered subsections. */
     static void

@@ -1,0 +1,132 @@
+// A relative mesh 'file' is a path next to the prm file that names it, also
+// when that file is included from a wrapper in another directory (the way
+// every full experiment is run with other output settings). Checked:
+//  - a scene in scenes/ naming 'box.msh', included by a wrapper in the
+//    working directory, opens scenes/box.msh;
+//  - the wrapper overriding 'file' with a relative name opens it next to the
+//    wrapper;
+//  - continued lines, comments and upper-case keywords are read as deal.II
+//    reads them, and entries of other subsections do not interfere;
+//  - a missing file is reported with the directory it was looked for in.
+
+#include <bfemp/base/input_error.h>
+#include <bfemp/base/prm_entry_origins.h>
+#include <bfemp/scene/scene_parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests.h"
+
+namespace
+{
+  void
+  write(const std::string &path, const std::string &text)
+  {
+    std::ofstream(path) << text;
+  }
+
+  std::string
+  opened_mesh(const std::string &prm)
+  {
+    bfemp::SceneParameters<2> parameters;
+    parameters.read(prm);
+    return std::filesystem::path(parameters.fem_bodies[0].mesh.file)
+      .lexically_normal()
+      .string();
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bfemp_tests::initlog();
+
+  std::filesystem::remove_all("scenes");
+  std::filesystem::create_directories("scenes");
+  std::filesystem::copy_file(SOURCE_DIR "/square.msh", "scenes/box.msh");
+  std::filesystem::copy_file(SOURCE_DIR "/square.msh",
+                             "local.msh",
+                             std::filesystem::copy_options::overwrite_existing);
+
+  // Scanned only (the material subsection has no entry 'file').
+  write("scenes/scan.prm",
+        "subsection fem body 0\n"
+        "  subsection mesh   # the FEM body's mesh\n"
+        "    set file = box.msh\n"
+        "  end\n"
+        "  subsection material\n"
+        "    set file = x # same name, other subsection\n"
+        "  end\n"
+        "end\n");
+  write("scan.prm",
+        "include scenes/scan.prm\n"
+        "subsection fem body 0\n  subsection material\n"
+        "    set file = y\n  end\nend\n");
+
+  {
+    const bfemp::PrmEntryOrigins origins("scan.prm");
+    bfemp_tests::check(origins.directory_of({"fem body 0", "mesh"}, "file") ==
+                         "scenes",
+                       "the scan finds the included file that sets it");
+    bfemp_tests::check(origins.directory_of({"fem body 0", "material"},
+                                            "file") == ".",
+                       "entries of other subsections are kept apart");
+    bfemp_tests::check(origins.directory_of({"fem body 1", "mesh"}, "file") ==
+                         ".",
+                       "entries never set fall back to the top file");
+  }
+
+  write("scenes/scene.prm",
+        "set dimension = 2\n"
+        "set number of bodies = 0\n"
+        "SET number of FEM bodies = 1\n"
+        "subsection time\n"
+        "  set integrator = implicit backward Euler\n"
+        "end\n"
+        "SUBSECTION fem body 0\n"
+        "  subsection mesh   # the FEM body's mesh\n"
+        "    set source = file\n"
+        "    set file = \\\n"
+        "               box.msh\n"
+        "  end\n"
+        "END\n");
+  write("wrapper.prm",
+        "include scenes/scene.prm\n"
+        "subsection run\n  set quiet = true\nend\n");
+  const std::string included = opened_mesh("wrapper.prm");
+  dealii::deallog << "included scene opens " << included << std::endl;
+  bfemp_tests::check(included == "scenes/box.msh",
+                     "a relative file in an included prm is found next to it");
+
+  write("override.prm",
+        "include scenes/scene.prm\n"
+        "subsection fem body 0\n"
+        "  subsection mesh\n    set file = local.msh\n  end\n"
+        "end\n");
+  const std::string overridden = opened_mesh("override.prm");
+  dealii::deallog << "override opens " << overridden << std::endl;
+  bfemp_tests::check(overridden == "local.msh",
+                     "a relative file set by the wrapper is found next to it");
+
+  std::filesystem::remove("scenes/box.msh");
+  std::string message;
+  try
+    {
+      opened_mesh("wrapper.prm");
+    }
+  catch (const bfemp::InputError &error)
+    {
+      message = error.what();
+    }
+  dealii::deallog << "missing file: " << message << std::endl;
+  bfemp_tests::check(message.find("scenes/box.msh") != std::string::npos &&
+                       message.find("'scenes'") != std::string::npos,
+                     "a missing file names the path and the directory");
+
+  dealii::deallog << "OK" << std::endl;
+}
