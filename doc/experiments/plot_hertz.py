@@ -27,7 +27,7 @@ import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_data import pvd, read_vtu  # noqa: E402
+from run_data import csv, pvd, read_vtu  # noqa: E402
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 
 
@@ -45,7 +45,7 @@ def measure(folder):
     R = float(entry(prm, "outer radius"))
     spacing = float(entry(prm, "cell size")) / float(entry(prm, "particles per cell"))
     model = entry(prm, "model")
-    d = np.genfromtxt(os.path.join(folder, "diagnostics.csv"), delimiter=",", names=True)
+    d = csv(os.path.join(folder, "diagnostics.csv"))
     plate = read_vtu(pvd(os.path.join(folder, "fem_body_0.pvd"))[0][1])["points"]
     top = plate[:, 1].max()
     rows = []

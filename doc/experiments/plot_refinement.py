@@ -20,25 +20,25 @@ import glob
 import os
 import re
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from run_data import csv, pvd, read_grid  # noqa: E402
+
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 END = 8.0  # end time of the full runs (make_refinement_prms.py)
 
 
 def height(folder):
     """Time and whole-system centre-of-mass height of a run."""
-    d = np.genfromtxt(os.path.join(folder, "bodies.csv"), delimiter=",",
-                      names=True)
+    d = csv(os.path.join(folder, "bodies.csv"))
     m1, m2 = d["mpm0_mass"], d["fem0_mass"]
     return d["time"], (m1 * d["mpm0_com_y"] + m2 * d["fem0_com_y"]) / (m1 + m2)
 
@@ -63,17 +63,8 @@ def order(dx, err):
     return np.polyfit(np.log(dx), np.log(err), 1)
 
 
-def read_vtu(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
 def last_snapshot(folder, series):
-    root = ET.parse(os.path.join(folder, series + ".pvd")).getroot()
-    files = [d.get("file") for d in root.iter("DataSet")]
-    return read_vtu(os.path.join(folder, files[-1]))
+    return read_grid(pvd(os.path.join(folder, series + ".pvd"))[-1][1])
 
 
 def plot_convergence(found):

@@ -23,12 +23,8 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_data import pvd, read_vtu  # noqa: E402
+from run_data import csv, pvd, read_vtu  # noqa: E402
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
-
-
-def csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
 
 
 def summary(folder):
@@ -43,7 +39,18 @@ def summary(folder):
     fem = b["fem0_kinetic_energy"] + b["fem0_elastic_energy"]
     mpm = b["mpm0_kinetic_energy"] + b["mpm0_elastic_energy"]
     p = d["momentum_x"]
-    return dict(t=t, E=E, fem=fem, mpm=mpm, barrier=d["barrier_energy"], p=p,
+    # Chatter of the contact: how often the FEM ring's kinetic energy turns
+    # from rising to falling, and the energy added or removed step by step.
+    window = slice(first, last + 1)
+    rise = np.diff(b["fem0_kinetic_energy"][window])
+    steps = np.diff(E[window]) / E[0]
+    chatter = dict(turns=int(np.sum(rise[1:] * rise[:-1] < 0)),
+                   steps=last - first + 1,
+                   pairs=float(np.mean(d["contact_pairs"][window])),
+                   no_pairs=int(np.sum(d["contact_pairs"][window] == 0)),
+                   gained=float(steps[steps > 0].sum()),
+                   lost=float(-steps[steps < 0].sum()))
+    return dict(chatter=chatter, t=t, E=E, fem=fem, mpm=mpm, barrier=d["barrier_energy"], p=p,
                 py=d["momentum_y"], M=d["mass"][0], first=t[first],
                 last=t[last], loss=1 - E[after] / E[0],
                 fem_after=fem[-1] / fem[after] - 1,
@@ -128,6 +135,12 @@ def main():
               % (label, name, s["first"], s["last"], 100 * s["loss"],
                  100 * (1 - s["E"][-1] / s["E"][0]), 100 * s["fem_after"],
                  100 * s["mpm_after"], s["dp"] / (s["M"] * 40)))
+        c = s["chatter"]
+        print("    contact steps %d: %d without pairs, %.1f pairs on average; the FEM "
+              "ring's kinetic energy turns %d times; steps that add energy add "
+              "%.1f %% of E0 in all, steps that remove it remove %.1f %%"
+              % (c["steps"], c["no_pairs"], c["pairs"], c["turns"],
+                 100 * c["gained"], 100 * c["lost"]))
     energy_figure(runs, os.path.join(IMAGES, "rings_energy.png"))
     snapshots(os.path.join(output, names[0]), [0.0, 0.03, 0.08, 0.15, 0.22, 0.3],
               os.path.join(IMAGES, "rings_snapshots.png"))

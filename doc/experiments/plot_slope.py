@@ -20,7 +20,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 G, TANGENT = 5.1, 0.2
@@ -31,6 +30,9 @@ RUNS = [("slope_mu_0", 0.0), ("slope_mu_0_1", 0.1),
         ("slope_mu_0_1999", 0.1999), ("slope_mu_0_2", 0.2)]
 RELEASE, END = 2.0, 3.0
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from run_data import csv, pvd, read_grid  # noqa: E402
+
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 
 
@@ -39,8 +41,7 @@ def analytic(mu):
 
 
 def bodies(folder):
-    return np.genfromtxt(os.path.join(folder, "bodies.csv"), delimiter=",",
-                         names=True)
+    return csv(os.path.join(folder, "bodies.csv"))
 
 
 def fitted_acceleration(t, v, release):
@@ -49,22 +50,15 @@ def fitted_acceleration(t, v, release):
     return np.polyfit(t[w] - release, v[w], 1)[0]
 
 
-def read_vtu(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
 def snapshot(folder, index):
     """Particles (x, y, von Mises) and FEM bodies (points, triangles, von
     Mises) of VTU snapshot @p index."""
-    p = read_vtu(os.path.join(folder, "particles_%05d.vtu" % index))
+    p = read_grid(os.path.join(folder, "particles_%05d.vtu" % index))
     particles = (vtk_to_numpy(p.GetPoints().GetData())[:, :2],
                  vtk_to_numpy(p.GetPointData().GetArray("von_mises")))
     fem = []
     for body in (0, 1):
-        f = read_vtu(os.path.join(folder, "fem_body_%d_%05d.vtu" % (body,
+        f = read_grid(os.path.join(folder, "fem_body_%d_%05d.vtu" % (body,
                                                                      index)))
         cells = vtk_to_numpy(f.GetCells().GetData()).reshape(-1, 4)[:, 1:]
         fem.append((vtk_to_numpy(f.GetPoints().GetData())[:, :2], cells))
@@ -73,9 +67,7 @@ def snapshot(folder, index):
 
 def snapshot_index(folder, time):
     """The VTU index whose time in particles.pvd is nearest to @p time."""
-    import xml.etree.ElementTree as ET
-    root = ET.parse(os.path.join(folder, "particles.pvd")).getroot()
-    times = [float(d.get("timestep")) for d in root.iter("DataSet")]
+    times = [t for t, _ in pvd(os.path.join(folder, "particles.pvd"))]
     return int(np.argmin(np.abs(np.array(times) - time)))
 
 
