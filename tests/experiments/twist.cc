@@ -1,11 +1,14 @@
 // BFEMP Section 6.7, 3D twist with friction, reduced
 // (prm/experiments/6_7_twist/twist_reduced_mu*.prm: the paper's scene and
 // parameters at dx = 0.25 with 2 x 2 x 2 particles per cell, 512 particles,
-// and a coarse FEM shell of 361 vertices). The FEM shell presses 0.25 m into
-// the MPM cube (0.5 m/s for 0.5 s) and then turns about z at pi/5 rad/s.
-// To stay within the CI budget the test stops at 0.75 s, a shell angle of
-// 0.05 pi, and runs mu = 0, 0.2 and 1.0 (mu = 0.5 is left out: in the paper
-// it sticks like 1.0 until 0.7 pi).
+// and a coarse FEM shell of 361 vertices). The FEM shell presses 0.5 m into
+// the MPM cube (0.5 m/s for 1 s) and then turns about z at pi/5 rad/s.
+// To stay within the CI budget the test stops at 1.3 s, a shell angle of
+// 0.06 pi, and runs the two ends of the paper's range, mu = 0 and 1.0. (The
+// reduced runs of all four mu to 5.5 s take 5 to 25 min of CPU each; they
+// are in doc/experiments/twist.md. Separating mu = 0.2 from 1.0 needs about
+// 0.1 pi of twist, which costs over two minutes of CPU per run, and steps of
+// 2e-2 s, tried to save time, move the slips by 0.1 shell angle.)
 //
 // Measured: the twist angle of the cube's top centre, the mean rotation
 // about z of the particles of the topmost particle layer within 0.25 m of
@@ -13,11 +16,9 @@
 // angle. Checked:
 //  - every run reaches the end time, no particle ever inside the shell
 //    (particles_in_fem = 0, min_distance > 0 in every row);
-//  - the slip is ordered by mu, more slip for smaller mu at the same
-//    prescribed twist: slip(0) > slip(0.2) + 0.1 shell angle and
-//    slip(0.2) > slip(1.0) + 0.1 shell angle;
+//  - the slip is ordered by mu: slip(0) > slip(1.0) + 0.5 shell angle;
 //  - with mu = 0 the cube's top turns by less than half the shell angle,
-//    with mu = 1.0 by more than half.
+//    with mu = 1.0 by more than three quarters of it.
 // The bands are justified in doc/experiments/twist.md.
 
 #include "../implicit/implicit_scene.h"
@@ -27,9 +28,9 @@ using namespace implicit_scene;
 
 namespace
 {
-  constexpr double end_time   = 0.75;
+  constexpr double end_time   = 1.3;
   constexpr double omega      = numbers::PI / 5.;
-  constexpr double t_twist    = 0.5;
+  constexpr double t_twist    = 1.;
   constexpr double top_radius = 0.25;
 
   struct Result
@@ -103,18 +104,15 @@ main()
   std::filesystem::remove_all("results");
 
   const Result mu0   = run_mu("0");
-  const Result mu02  = run_mu("0_2");
   const Result mu10  = run_mu("1_0");
   const double shell = omega * (end_time - t_twist);
 
-  bfemp_tests::check(mu0.slip > mu02.slip + 0.1 * shell,
-                     "slip(mu = 0) > slip(mu = 0.2) + 0.1 shell angle");
-  bfemp_tests::check(mu02.slip > mu10.slip + 0.1 * shell,
-                     "slip(mu = 0.2) > slip(mu = 1.0) + 0.1 shell angle");
+  bfemp_tests::check(mu0.slip > mu10.slip + 0.5 * shell,
+                     "slip(mu = 0) > slip(mu = 1.0) + 0.5 shell angle");
   bfemp_tests::check(mu0.cube_angle < 0.5 * shell,
                      "mu = 0: the cube's top turns by less than half the "
                      "shell angle");
-  bfemp_tests::check(mu10.cube_angle > 0.5 * shell,
-                     "mu = 1.0: the cube's top turns by more than half the "
-                     "shell angle");
+  bfemp_tests::check(mu10.cube_angle > 0.75 * shell,
+                     "mu = 1.0: the cube's top turns by more than three "
+                     "quarters of the shell angle");
 }
