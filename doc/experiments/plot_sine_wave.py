@@ -163,5 +163,27 @@ for row, (v, folder) in enumerate((("b", bfemp), ("l", level))):
 fig.colorbar(sc, ax=axes, label="von Mises stress [Pa]", shrink=0.8)
 fig.savefig(os.path.join(IMG, "sine_wave_snapshots.png"), dpi=80,
             bbox_inches="tight")
+# The numbers of doc/experiments/sine_wave.md.
+top0 = vtk_to_numpy(read_grid(series["l"][0][1]).GetPoints().GetData())[:, 1].max()
+for name, d, b, column in (("BFEMP", db, bb, "contact_pairs"),
+                           ("level set", dl, bl, "particles_in_level_sets")):
+    touching = np.nonzero(d[column] > 0)[0]
+    inside = d["particles_in_fem"] if name == "BFEMP" else d["particles_in_level_sets"]
+    line = (f"{name}: {len(d)} rows to t = {d['time'][-1]:.3f} s, particles inside "
+            f"the boundary: max {int(inside.max())}")
+    if len(touching):
+        t_last = d["time"][touching[-1]]
+        lowest = c0 - 1 / 40 + displacement(frames, t_last)[1]
+        line += (f"; touching from t = {d['time'][touching[0]]:.3f} s to "
+                 f"{t_last:.3f} s, when the boundary's lowest point is "
+                 f"{1e3 * (lowest - top0):.1f} mm above the box's initial top "
+                 f"particles")
+    rise = b["mpm0_com_y"] - b["mpm0_com_y"][0]
+    lifted = b["time"] > t_up
+    line += (f"; centre of mass at most {1e3 * rise.max():.1f} mm above its start "
+             f"(after {t_up:g} s: {1e3 * rise[lifted].max():.1f} mm)")
+    if name == "BFEMP":
+        line += f", closest particle {d['min_distance'][touching].min():.2e} m"
+    print(line)
 print("wrote", os.path.join(IMG, "sine_wave_penetration.png"), "and",
       os.path.join(IMG, "sine_wave_snapshots.png"))
