@@ -16,7 +16,6 @@ F = pi E a^2 / (4 (1 - nu^2) R). Writes doc/images/experiments/hertz_force.png
 and hertz_disk.png. Needs numpy, matplotlib and the vtk Python module.
 """
 import os
-import re
 import sys
 
 import matplotlib
@@ -27,24 +26,19 @@ import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_data import csv, pvd, read_vtu  # noqa: E402
+from run_data import csv, prm_entries, prm_entry, pvd, read_vtu  # noqa: E402
 IMAGES = os.path.join(HERE, "..", "images", "experiments")
 
 
-def entry(prm, name):
-    """First value of 'set <name> = ...' in a prm text."""
-    m = re.search(r"set\s+" + re.escape(name) + r"\s*=\s*([^\n#]+)", prm)
-    return m.group(1).strip()
-
-
 def measure(folder):
-    prm = open(os.path.join(folder, "input.prm")).read()
-    dhat = float(entry(prm, "activation distance"))
-    E = float(entry(prm, "Young's modulus"))
-    nu = float(entry(prm, "Poisson's ratio"))
-    R = float(entry(prm, "outer radius"))
-    spacing = float(entry(prm, "cell size")) / float(entry(prm, "particles per cell"))
-    model = entry(prm, "model")
+    prm = prm_entries(os.path.join(folder, "input.prm"))
+    dhat = float(prm_entry(prm, "contact/activation distance"))
+    E = float(prm_entry(prm, "body 0/material/Young's modulus"))
+    nu = float(prm_entry(prm, "body 0/material/Poisson's ratio"))
+    R = float(prm_entry(prm, "body 0/primitive 0/outer radius"))
+    spacing = (float(prm_entry(prm, "grid/cell size")) /
+               float(prm_entry(prm, "body 0/particles per cell")))
+    model = prm_entry(prm, "body 0/material/model")
     d = csv(os.path.join(folder, "diagnostics.csv"))
     plate = read_vtu(pvd(os.path.join(folder, "fem_body_0.pvd"))[0][1])["points"]
     top = plate[:, 1].max()

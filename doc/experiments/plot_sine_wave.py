@@ -22,7 +22,6 @@ python3-vtk9; use /usr/bin/python3). The snapshots are drawn with matplotlib
 from the VTU files read by VTK, so no display is needed.
 """
 import os
-import re
 import sys
 
 import numpy as np
@@ -34,7 +33,7 @@ import matplotlib.pyplot as plt
 import matplotlib.tri as mtri
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_data import csv, pvd, read_grid  # noqa: E402
+from run_data import csv, prm_entries, prm_entry, pvd, read_grid  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "output"
 IMG = sys.argv[2] if len(sys.argv) > 2 else os.path.normpath(os.path.join(
@@ -49,26 +48,10 @@ def run_folder(variant):
     sys.exit(f"no run folder sine_wave_{variant}[_reduced] in {OUT}")
 
 
-def prm_text(path):
-    """The text of a prm file with its 'include' lines expanded."""
-    out = []
-    for line in open(path):
-        m = re.match(r"\s*include\s+(\S+)", line)
-        if m:
-            name = m.group(1)
-            if not os.path.isabs(name):
-                name = os.path.join(os.path.dirname(path), name)
-            out.append(prm_text(name))
-        else:
-            out.append(line)
-    return "".join(out)
-
-
-def entry(folder, pattern):
-    """The last value of the prm entry matching @p pattern in the run's
-    input.prm (includes expanded)."""
-    text = prm_text(os.path.join(folder, "input.prm"))
-    return re.findall(r"set " + pattern + r"[ \t]*=[ \t]*([^\n#]+)", text)[-1]
+def entry(folder, name):
+    """The value of the prm entry whose path ends in @p name in the run's
+    input.prm (includes followed)."""
+    return prm_entry(prm_entries(os.path.join(folder, "input.prm")), name)
 
 
 def keyframes(folder):

@@ -1,8 +1,9 @@
 """Readers of bfemp run folders shared by the experiment plot scripts:
 diagnostics.csv / bodies.csv as a numpy record array, the (time, file) list
 of a PVD series, and one VTU file as VTK's unstructured grid or as its
-points, cells and von Mises stress. Needs numpy and the vtk Python module
-(Debian: python3-numpy, python3-vtk9)."""
+points, cells and von Mises stress; and the entries of a run's input.prm.
+Needs numpy and the vtk Python module (Debian: python3-numpy,
+python3-vtk9)."""
 import os
 import xml.etree.ElementTree as ET
 
@@ -46,3 +47,42 @@ def read_vtu(path):
     return dict(points=points, cells=cells,
                 point_vm=None if point_vm is None else vtk_to_numpy(point_vm),
                 cell_vm=None if cell_vm is None else vtk_to_numpy(cell_vm))
+
+
+def prm_entries(path):
+    """{'subsection/.../entry': value} of a prm file with its includes
+    followed (a relative include path is tried next to the including file,
+    then as written), later 'set' lines winning as in deal.II."""
+    entries, sections = {}, []
+
+    def scan(name):
+        for line in open(name):
+            line = line.split("#")[0].strip()
+            words = line.split(None, 1)
+            if not words:
+                continue
+            key = words[0].lower()
+            if key == "subsection":
+                sections.append(words[1].strip())
+            elif key == "end" and sections:
+                sections.pop()
+            elif key == "set" and "=" in line:
+                entry, value = words[1].split("=", 1)
+                entries["/".join(sections + [entry.strip()])] = value.strip()
+            elif key == "include":
+                target = words[1].strip()
+                beside = os.path.join(os.path.dirname(name), target)
+                scan(beside if os.path.exists(beside) else target)
+
+    scan(path)
+    return entries
+
+
+def prm_entry(entries, name):
+    """The value of the entry whose path ends in @p name (e.g.
+    'body 0/particles per cell'); the first such path in file order if
+    several do."""
+    for path, value in entries.items():
+        if path == name or path.endswith("/" + name):
+            return value
+    raise KeyError(name)
