@@ -70,15 +70,6 @@ namespace bfemp
 
 
   template <int dim>
-  void
-  BarrierTerm<dim>::set_hessian_projection(const bool p)
-  {
-    project = p;
-  }
-
-
-
-  template <int dim>
   std::string
   BarrierTerm<dim>::name() const
   {
@@ -112,7 +103,7 @@ namespace bfemp
     const unsigned int                              k,
     const std::vector<std::vector<Point<dim>>>     &x,
     const Vector<double>                           &u,
-    const bool                                      with_hessian) const
+    const std::optional<HessianKind>               &hessian_kind) const
   {
     using FacetReference  = typename ContactGeometry<dim>::FacetReference;
     const double    dhat  = parameters.activation_distance;
@@ -139,9 +130,9 @@ namespace bfemp
         local(near.facets[j].surface, a);
     const unsigned int n = (1 + result.nodes.size()) * dim;
     result.gradient.reinit(n);
-    if (with_hessian)
+    if (hessian_kind)
       result.hessian.reinit(n, n);
-    FullMatrix<double> *hessian = with_hessian ? &result.hessian : nullptr;
+    FullMatrix<double> *hessian = hessian_kind ? &result.hessian : nullptr;
 
     double nearest = std::numeric_limits<double>::infinity();
     // Each term's share of the force on the particle, by surface.
@@ -273,7 +264,7 @@ namespace bfemp
                             hessian);
         book_force(s);
       }
-    if (with_hessian && project)
+    if (hessian_kind == HessianKind::projected)
       project_to_positive_semidefinite(result.hessian);
     return result;
   }
@@ -282,8 +273,8 @@ namespace bfemp
 
   template <int dim>
   std::vector<typename BarrierTerm<dim>::ParticleContact>
-  BarrierTerm<dim>::contacts(const Vector<double> &u,
-                             const bool            with_hessian) const
+  BarrierTerm<dim>::contacts(const Vector<double>             &u,
+                             const std::optional<HessianKind> &hessian) const
   {
     const auto near =
       contact_geometry.near_pairs(u, parameters.activation_distance);
@@ -294,7 +285,7 @@ namespace bfemp
       near.size(),
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int k = begin; k < end; ++k)
-          result[k] = evaluate(near, k, x, u, with_hessian);
+          result[k] = evaluate(near, k, x, u, hessian);
       },
       16);
     return result;
@@ -424,7 +415,8 @@ namespace bfemp
       contact_geometry.near_pairs(u, parameters.activation_distance);
     const auto x   = contact_geometry.surface_positions(u);
     double energy  = chunked_sum<double>(near.size(), [&](const std::size_t k) {
-      return evaluate(near, static_cast<unsigned int>(k), x, u, false).energy;
+      return evaluate(near, static_cast<unsigned int>(k), x, u, std::nullopt)
+        .energy;
     });
     last_magnitude = scale * energy;
     return scale * energy;
@@ -446,7 +438,7 @@ namespace bfemp
   BarrierTerm<dim>::add_gradient(const Vector<double> &u,
                                  Vector<double>       &gradient) const
   {
-    for (const ParticleContact &contact : contacts(u, false))
+    for (const ParticleContact &contact : contacts(u))
       {
         Tensor<1, dim> particle_gradient;
         for (unsigned int d = 0; d < dim; ++d)
@@ -474,9 +466,10 @@ namespace bfemp
   template <int dim>
   void
   BarrierTerm<dim>::add_hessian(const Vector<double> &u,
-                                SparseMatrix<double> &hessian) const
+                                SparseMatrix<double> &hessian,
+                                const HessianKind     kind) const
   {
-    for (const ParticleContact &contact : contacts(u, true))
+    for (const ParticleContact &contact : contacts(u, kind))
       {
         // Chain rule of eq. 29: unknown j of the clique maps to local
         // coordinate block b(j) with factor c(j) (w_iq for grid nodes, 1
@@ -576,7 +569,7 @@ namespace bfemp
     const auto near =
       contact_geometry.near_pairs(u, parameters.activation_distance);
     m.pairs = near.facets.size();
-    for (const ParticleContact &contact : contacts(u, false))
+    for (const ParticleContact &contact : contacts(u))
       {
         ++m.particles;
         m.energy += contact.energy;

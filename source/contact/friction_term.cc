@@ -94,7 +94,7 @@ namespace bfemp
     const ContactGeometry<dim> &geometry = barrier.geometry();
     const auto                  x        = geometry.surface_positions(u);
     pairs.clear();
-    for (const auto &contact : barrier.contacts(u, false))
+    for (const auto &contact : barrier.contacts(u))
       {
         const unsigned int q  = contact.particle;
         const Point<dim>   xq = geometry.particle_position(q, u);
@@ -305,7 +305,8 @@ namespace bfemp
   template <int dim>
   void
   FrictionTerm<dim>::add_hessian(const Vector<double> &u,
-                                 SparseMatrix<double> &hessian) const
+                                 SparseMatrix<double> &hessian,
+                                 const HessianKind /*kind*/) const
   {
     std::vector<unsigned int>            nodes;
     std::vector<double>                  factors;

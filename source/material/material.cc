@@ -30,6 +30,16 @@ namespace bfemp
 
   template <int dim>
   Tensor<4, dim>
+  Material<dim>::tangent(const Tensor<2, dim> &F, const bool projected) const
+  {
+    return projected ? projected_first_piola_kirchhoff_derivative(F)
+                     : first_piola_kirchhoff_derivative(F);
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
   Material<dim>::projected_first_piola_kirchhoff_derivative(
     const Tensor<2, dim> &F) const
   {

@@ -101,6 +101,21 @@ namespace bfemp
   void
   CholmodSolver::factorize(const SparseMatrix<double> &matrix)
   {
+    if (!factorize_if_positive_definite(matrix))
+      throw SimulationError(
+        "CHOLMOD: the Newton matrix is not positive definite (the Cholesky "
+        "factorization broke down at pivot " +
+        std::to_string(failed_pivot) + " of " + std::to_string(matrix.m()) +
+        "); projected Newton needs an SPD matrix: check the tangent "
+        "projection and the mass term");
+  }
+
+
+
+  bool
+  CholmodSolver::factorize_if_positive_definite(
+    const SparseMatrix<double> &matrix)
+  {
     AssertThrow(matrix.m() == matrix.n(),
                 ExcMessage("CHOLMOD: the Newton matrix must be square"));
     factorized                     = false;
@@ -190,17 +205,16 @@ namespace bfemp
     if (data->common.status == CHOLMOD_NOT_POSDEF ||
         (data->common.status == CHOLMOD_OK &&
          static_cast<std::size_t>(data->factor->minor) < n))
-      throw SimulationError(
-        "CHOLMOD: the Newton matrix is not positive definite (the Cholesky "
-        "factorization broke down at pivot " +
-        std::to_string(data->factor->minor) + " of " + std::to_string(n) +
-        "); projected Newton needs an SPD matrix: check the tangent "
-        "projection and the mass term");
+      {
+        failed_pivot = data->factor->minor;
+        return false;
+      }
     if (data->common.status != CHOLMOD_OK)
       throw SimulationError(
         "CHOLMOD: the numeric factorization failed (CHOLMOD status " +
         std::to_string(data->common.status) + ")");
     factorized = true;
+    return true;
   }
 
 

@@ -163,7 +163,8 @@ namespace bfemp
   template <int dim>
   void
   FemElasticityTerm<dim>::add_hessian(const Vector<double> &u,
-                                      SparseMatrix<double> &hessian) const
+                                      SparseMatrix<double> &hessian,
+                                      const HessianKind     kind) const
   {
     struct Copy
     {
@@ -185,7 +186,7 @@ namespace bfemp
             copy.dof_indices[dim * a + c] = dim * nodes[a] + c;
         const Tensor<2, dim> F = element.deformation_gradient(positions(*e, u));
         copy.local             = element.hessian(
-          body.material().projected_first_piola_kirchhoff_derivative(F));
+          body.material().tangent(F, kind == HessianKind::projected));
         copy.local *= scale;
       },
       [&](const Copy &copy) { hessian.add(copy.dof_indices, copy.local); },

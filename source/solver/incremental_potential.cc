@@ -88,7 +88,8 @@ namespace bfemp
 
   template <int dim>
   const SparseMatrix<double> &
-  IncrementalPotential<dim>::hessian(const Vector<double> &u)
+  IncrementalPotential<dim>::hessian(const Vector<double> &u,
+                                     const HessianKind     kind)
   {
     bool missing = false;
     for (const EnergyTerm<dim> *term : terms)
@@ -97,7 +98,7 @@ namespace bfemp
       setup_system();
     matrix = 0.;
     for (const EnergyTerm<dim> *term : terms)
-      term->add_hessian(u, matrix);
+      term->add_hessian(u, matrix, kind);
     apply_constraints();
     return matrix;
   }

@@ -79,7 +79,8 @@ namespace bfemp
   template <int dim>
   void
   InertiaTerm<dim>::add_hessian(const Vector<double> &,
-                                SparseMatrix<double> &hessian) const
+                                SparseMatrix<double> &hessian,
+                                const HessianKind /*kind*/) const
   {
     for (unsigned int i = 0; i < mass.size(); ++i)
       for (unsigned int c = 0; c < dim; ++c)

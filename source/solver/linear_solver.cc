@@ -20,6 +20,16 @@ namespace bfemp
 
 
 
+  bool
+  LinearSolver::factorize_if_positive_definite(
+    const SparseMatrix<double> &matrix)
+  {
+    factorize(matrix);
+    return true;
+  }
+
+
+
   unsigned int
   LinearSolver::n_symbolic_analyses() const
   {

@@ -178,7 +178,8 @@ namespace bfemp
   template <int degree>
   void
   MpmElasticityTerm<dim>::add_hessian(const Vector<double> &u,
-                                      SparseMatrix<double> &hessian) const
+                                      SparseMatrix<double> &hessian,
+                                      const HessianKind     kind) const
   {
     constexpr unsigned int max_nodes = KernelStencil<dim, degree>::n_nodes;
     // Array types named outside the lambda: GCC 12 fails on arrays sized
@@ -189,8 +190,8 @@ namespace bfemp
     particles.for_each_scattering([&](const auto &particle) {
       const ParticleStencil<dim, degree> s(grid.lattice(), dofs, particle);
       const Tensor<4, dim>               A =
-        materials[s.material]->projected_first_piola_kirchhoff_derivative(
-          s.deformation_gradient(u));
+        materials[s.material]->tangent(s.deformation_gradient(u),
+                                       kind == HessianKind::projected);
       const double weight = scale * s.volume;
 
       // A_k[a][b][d] = sum_j A[a][j][b][d] g^_k[j]: the first contraction,
@@ -310,10 +311,11 @@ namespace bfemp
   template <int dim>
   void
   MpmElasticityTerm<dim>::add_hessian(const Vector<double> &u,
-                                      SparseMatrix<double> &hessian) const
+                                      SparseMatrix<double> &hessian,
+                                      const HessianKind     kind) const
   {
     dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
-      add_hessian<decltype(degree)::value>(u, hessian);
+      add_hessian<decltype(degree)::value>(u, hessian, kind);
     });
   }
 

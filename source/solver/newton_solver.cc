@@ -18,6 +18,7 @@ namespace bfemp
     ccd_bound_hits += other.ccd_bound_hits;
     partial_constraint_moves += other.partial_constraint_moves;
     carried_constraint_moves += other.carried_constraint_moves;
+    projected_hessians += other.projected_hessians;
     residual            = other.residual;
     energy              = other.energy;
     minimum_determinant = other.minimum_determinant;
@@ -219,6 +220,45 @@ namespace bfemp
 
 
   template <int dim>
+  bool
+  NewtonSolver<dim>::newton_direction(IncrementalPotential<dim> &potential,
+                                      const Vector<double>      &u,
+                                      const Vector<double>      &minus_gradient,
+                                      const HessianKind          kind,
+                                      Vector<double>            &direction,
+                                      NewtonStatistics &statistics) const
+  {
+    Timer                       timer;
+    const SparseMatrix<double> &hessian = potential.hessian(u, kind);
+    statistics.assembly_time += timer.wall_time();
+
+    timer.restart();
+    bool definite = true;
+    if (kind == HessianKind::exact)
+      definite = solver->factorize_if_positive_definite(hessian);
+    else
+      solver->factorize(hessian);
+    statistics.factorization_time += timer.wall_time();
+    if (!definite)
+      return false;
+
+    timer.restart();
+    solver->solve(minus_gradient, direction);
+    // P H P + (I - P) keeps p = P p only up to round-off of the size of
+    // H; projecting again keeps slanted slip constraints exact.
+    potential.dof_space().project(direction);
+    statistics.solve_time += timer.wall_time();
+    if (kind == HessianKind::projected)
+      return true;
+    // Solvers that cannot detect indefiniteness: a direction that does not
+    // descend (or is not finite) came from an indefinite matrix.
+    const double slope = -(minus_gradient * direction);
+    return std::isfinite(direction.linfty_norm()) && slope < 0.;
+  }
+
+
+
+  template <int dim>
   NewtonStatistics
   NewtonSolver<dim>::minimize(IncrementalPotential<dim> &potential,
                               Vector<double>            &u,
@@ -273,20 +313,30 @@ namespace bfemp
 
         timer.restart();
         potential.gradient(u, gradient);
-        const SparseMatrix<double> &hessian = potential.hessian(u);
-        statistics.assembly_time += timer.wall_time();
-
-        timer.restart();
-        solver->factorize(hessian);
-        statistics.factorization_time += timer.wall_time();
-
-        timer.restart();
         gradient *= -1.;
-        solver->solve(gradient, direction);
-        // P H P + (I - P) keeps p = P p only up to round-off of the size of
-        // H; projecting again keeps slanted slip constraints exact.
-        potential.dof_space().project(direction);
-        statistics.solve_time += timer.wall_time();
+        statistics.assembly_time += timer.wall_time();
+        // The projection keeps every local Hessian PSD but drops curvature
+        // where it acts (the rotation mode of a compressed neo-Hookean
+        // particle or element, a contact distance's curvature): Newton then
+        // converges linearly at best. Where the exact sum is positive
+        // definite it gives a descent direction with quadratic convergence.
+        const bool exact = parameters.hessian_projection == "when indefinite" &&
+                           newton_direction(potential,
+                                            u,
+                                            gradient,
+                                            HessianKind::exact,
+                                            direction,
+                                            statistics);
+        if (!exact)
+          {
+            newton_direction(potential,
+                             u,
+                             gradient,
+                             HessianKind::projected,
+                             direction,
+                             statistics);
+            ++statistics.projected_hessians;
+          }
         if (!std::isfinite(direction.linfty_norm()))
           fail("the linear solver returned a non-finite Newton direction");
         statistics.residual = direction.linfty_norm() / dt;

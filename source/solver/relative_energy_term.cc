@@ -74,9 +74,10 @@ namespace bfemp
   template <int dim>
   void
   RelativeEnergyTerm<dim>::add_hessian(const Vector<double> &u,
-                                       SparseMatrix<double> &hessian) const
+                                       SparseMatrix<double> &hessian,
+                                       const HessianKind     kind) const
   {
-    term.add_hessian(u, hessian);
+    term.add_hessian(u, hessian, kind);
   }
 
 

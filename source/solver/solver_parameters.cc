@@ -27,6 +27,21 @@ namespace bfemp
                       "pattern is unchanged); UMFPACK: deal.II's LU; CG AMG: "
                       "Trilinos conjugate gradients with ML algebraic "
                       "multigrid, for large 3D problems.");
+    prm.declare_entry(
+      "Hessian projection",
+      "when indefinite",
+      Patterns::Selection("always|when indefinite"),
+      "[-] always: every local Hessian (particle, element, contact) is "
+      "projected onto the positive semi-definite cone before assembly, the "
+      "projected Newton of BFEMP Section 5; where a projection acts (the "
+      "rotation mode of a compressed neo-Hookean element, the curvature of "
+      "a contact distance) Newton then converges only linearly. when "
+      "indefinite: each iteration first factorizes the exact Hessian and "
+      "falls back to the projected one where it is not positive definite "
+      "(UMFPACK and CG AMG cannot tell: there the exact direction is kept "
+      "if it descends), which restores quadratic convergence near a "
+      "minimizer at the price of a second assembly where it falls back. "
+      "The converged steps agree within the Newton tolerance.");
     prm.declare_entry("CG tolerance",
                       "1e-10",
                       Patterns::Double(),
@@ -67,6 +82,7 @@ namespace bfemp
     newton_tolerance          = prm.get_double("Newton tolerance");
     maximum_newton_iterations = prm.get_integer("maximum Newton iterations");
     linear_solver             = prm.get("linear solver");
+    hessian_projection        = prm.get("Hessian projection");
     cg_tolerance              = prm.get_double("CG tolerance");
     armijo_constant           = prm.get_double("Armijo constant");
     step_bound_fraction       = prm.get_double("step bound fraction");

@@ -162,7 +162,8 @@ namespace
   assembled_hessian(const EnergyTerm<dim>  &term,
                     const BarrierTerm<dim> &registry,
                     const DofSpace<dim>    &dofs,
-                    const Vector<double>   &u)
+                    const Vector<double>   &u,
+                    const HessianKind       kind = HessianKind::projected)
   {
     // The barrier term holds the couplings of barrier and friction pairs.
     NodeSparsity sparsity(dofs.n_nodes());
@@ -170,7 +171,7 @@ namespace
     SparsityPattern pattern;
     sparsity.build(dim, pattern);
     SparseMatrix<double> matrix(pattern);
-    term.add_hessian(u, matrix);
+    term.add_hessian(u, matrix, kind);
     return dense(matrix);
   }
 
@@ -198,7 +199,7 @@ namespace
     const Vector<double> u = scene.random_displacement(1e-4);
     barrier.begin_step(u);
 
-    const auto   contacts      = barrier.contacts(u, false);
+    const auto   contacts      = barrier.contacts(u);
     unsigned int n_facet_terms = 0;
     for (const auto &c : contacts)
       n_facet_terms += c.nodes.size();
@@ -221,14 +222,15 @@ namespace
                                     finite_difference_gradient(value, u, 1e-7)),
                 1e-5);
 
-    barrier.set_hessian_projection(false);
-    const FullMatrix<double> raw =
-      assembled_hessian<dim>(barrier, barrier, scene.dofs, u);
+    const FullMatrix<double> raw = assembled_hessian<dim>(barrier,
+                                                          barrier,
+                                                          scene.dofs,
+                                                          u,
+                                                          HessianKind::exact);
     report<dim>(
       "barrier Hessian (raw)",
       relative_difference(raw, finite_difference_hessian(gradient, u, 1e-8)),
       1e-5);
-    barrier.set_hessian_projection(true);
     const FullMatrix<double> projected =
       assembled_hessian<dim>(barrier, barrier, scene.dofs, u);
     const auto range = eigenvalue_range(projected);

@@ -8,14 +8,16 @@
 //  - the collision window, first / last row with contact pairs: paper
 //    0.025 s / 0.293 s; band +-0.003 s / +-0.01 s;
 //  - the energy (kinetic + elastic + barrier) lost by the first row after
-//    the collision: paper 8.57 % (APIC), 9.67 % (FLIP); band 4 % .. 18 %.
-//    At this resolution the loss depends on where the particles sit on the
-//    grid: four grid offsets gave 7.8 / 9.0 / 12.5 / 13.1 % (APIC) and
-//    12.5 / 15.7 / 16.0 / 17.0 % (FLIP), see doc/experiments/rings.md; the
-//    band holds all of them, it is a plausibility band, not a convergence
-//    result (the finer runs of rings.md did not converge toward the paper);
-//  - FLIP loses more than APIC: true for all four grid offsets at this
-//    resolution (not at every resolution, see rings.md);
+//    the collision: paper 8.57 % (APIC), 9.67 % (FLIP); band 4 % .. 22 %.
+//    At this resolution the loss is chaotic: the surface particles bounce
+//    on the barrier, and perturbations of round-off size (the Newton
+//    tolerance, exact or projected Hessian, BLAS threads in CHOLMOD) as well
+//    as grid offsets move it between 7.8 and 15.3 % (APIC) and 12.5 and
+//    19.0 % (FLIP) over 26 runs, see doc/experiments/rings.md. The band
+//    holds all of them with a margin; it is a plausibility band, not a
+//    convergence result. For the same reason the measured values go to
+//    stdout, not into the compared output, and the paper's ordering (FLIP
+//    loses more than APIC, true in 12 of 13 paired runs) is not checked;
 //  - after the separation the FEM ring keeps its energy (bodies.csv, kinetic
 //    + elastic of fem0, within 0.5 % of its value after the collision) while
 //    the MPM ring loses some (particle-grid transfers).
@@ -30,12 +32,7 @@ namespace
   constexpr double eps_d = 1e-6;
   constexpr double speed = 40.;
 
-  struct Result
-  {
-    double loss;
-  };
-
-  Result
+  void
   check_scheme(const std::string &scheme)
   {
     const std::string name   = "rings_" + scheme;
@@ -107,15 +104,15 @@ namespace
             last = k;
           }
       }
-    deallog << "  contact from t = " << rounded(c[0][first], 2)
-            << " s to t = " << rounded(c[0][last], 3) << " s" << std::endl;
+    std::cout << scheme << ": contact from t = " << rounded(c[0][first], 3)
+              << " s to t = " << rounded(c[0][last], 3) << " s" << std::endl;
     bfemp_tests::check(min_distance > 0., prefix + "no penetration");
     bfemp_tests::check(first > 0 && std::abs(c[0][first] - 0.025) <= 0.003,
                        prefix + "contact starts at 0.025 +- 0.003 s");
     bfemp_tests::check(last + 1 < n && std::abs(c[0][last] - 0.293) <= 0.01,
                        prefix + "contact ends at 0.293 +- 0.01 s");
     if (first == 0 || last + 1 >= n)
-      return {0.};
+      return;
 
     // Energy lost in the collision.
     std::vector<double> E(n);
@@ -123,26 +120,26 @@ namespace
       E[k] = c[2][k] + c[3][k];
     const std::size_t after = last + 1;
     const double      loss  = 1. - E[after] / E[0];
-    deallog << "  energy lost in the collision " << rounded(100. * loss, 2)
-            << " %" << std::endl;
-    bfemp_tests::check(loss >= 0.04 && loss <= 0.18,
+    std::cout << scheme << ": energy lost in the collision "
+              << rounded(100. * loss, 3) << " %" << std::endl;
+    bfemp_tests::check(loss >= 0.04 && loss <= 0.22,
                        prefix + "energy lost in the collision within "
-                                "4 % .. 18 % (paper 8.57 % / 9.67 %)");
+                                "4 % .. 22 % (paper 8.57 % / 9.67 %)");
 
     // After the separation.
     const auto   fem = [&](const std::size_t k) { return b[2][k] + b[3][k]; };
     const auto   mpm = [&](const std::size_t k) { return b[0][k] + b[1][k]; };
     const double fem_change = fem(n - 1) / fem(after) - 1.;
     const double mpm_change = mpm(n - 1) / mpm(after) - 1.;
-    deallog << "  after the separation ("
-            << rounded(c[0][n - 1] - c[0][after], 2) << " s): FEM ring energy "
-            << std::showpos << rounded(100. * fem_change, 1) << " %, MPM ring "
-            << rounded(100. * mpm_change, 2) << std::noshowpos << " %"
-            << std::endl;
+    std::cout << scheme << ": after the separation ("
+              << rounded(c[0][n - 1] - c[0][after], 2)
+              << " s): FEM ring energy " << std::showpos
+              << rounded(100. * fem_change, 1) << " %, MPM ring "
+              << rounded(100. * mpm_change, 2) << std::noshowpos << " %"
+              << std::endl;
     bfemp_tests::check(std::abs(fem_change) <= 5e-3,
                        prefix + "the FEM ring keeps its energy (0.5 %)");
     bfemp_tests::check(mpm_change < 0., prefix + "the MPM ring loses energy");
-    return {loss};
   }
 } // namespace
 
@@ -155,8 +152,6 @@ main(int argc, char **argv)
   bfemp_tests::initlog();
   std::filesystem::remove_all("results");
 
-  const Result apic = check_scheme("APIC");
-  const Result flip = check_scheme("FLIP");
-  bfemp_tests::check(flip.loss > apic.loss,
-                     "FLIP loses more energy in the collision than APIC");
+  for (const std::string scheme : {"APIC", "FLIP"})
+    check_scheme(scheme);
 }

@@ -340,6 +340,18 @@ namespace
     elasticity.assemble(A, 1., 1., 10.);
     check_solve(cholmod, A, b, "SPD after the indefinite one");
 
+    // factorize_if_positive_definite: false instead of the error, and the
+    // next SPD matrix factorizes (Newton's exact-Hessian attempt).
+    A.set(100, 100, -1.);
+    bfemp_tests::check(!cholmod.factorize_if_positive_definite(A),
+                       "CHOLMOD: factorize_if_positive_definite refuses an "
+                       "indefinite matrix");
+    elasticity.assemble(A, 1., 1., 10.);
+    bfemp_tests::check(cholmod.factorize_if_positive_definite(A),
+                       "CHOLMOD: factorize_if_positive_definite accepts the "
+                       "SPD matrix after it");
+    check_solve(cholmod, A, b, "SPD after factorize_if_positive_definite");
+
     // Negative definite: -A.
     A *= -1.;
     check_simulation_error([&]() { cholmod.factorize(A); },

@@ -70,6 +70,33 @@ namespace bfemp_tests
 
 
   /**
+   * A neo-Hookean bar [0, length] x [0, width]^(dim-1) (density 1000), as
+   * box_body_parameters(); its face x = 0 has boundary id 0, x = length id 1.
+   */
+  template <int dim>
+  FemBodyParameters<dim>
+  neo_hookean_bar(const double length,
+                  const double width,
+                  const double edge,
+                  const double youngs_modulus,
+                  const double poisson_ratio)
+  {
+    Point<dim> upper;
+    upper[0] = length;
+    for (unsigned int d = 1; d < dim; ++d)
+      upper[d] = width;
+    return box_body_parameters<dim>(Point<dim>(),
+                                    upper,
+                                    edge,
+                                    "neo-Hookean",
+                                    youngs_modulus,
+                                    poisson_ratio,
+                                    1000.);
+  }
+
+
+
+  /**
    * FEM bodies with their unified DoF space, elasticity term and incremental
    * potential, wired as in ImplicitIntegrator (members are constructed in
    * this order, so the references the term and the potential keep are
@@ -186,7 +213,9 @@ namespace bfemp_tests
     }
 
     void
-    add_hessian(const Vector<double> &, SparseMatrix<double> &) const override
+    add_hessian(const Vector<double> &,
+                SparseMatrix<double> &,
+                const HessianKind) const override
     {}
 
   private:
@@ -229,6 +258,31 @@ namespace bfemp_tests
 
 
   /** What the test-local Newton loop saw. */
+  /** Elements of body 0 whose tangent the PSD projection changes at u. */
+  template <int dim>
+  unsigned int
+  projected_tangents(const FemScene<dim> &scene, const Vector<double> &u)
+  {
+    const FemBody<dim> &body = *scene.bodies[0];
+    unsigned int        n    = 0;
+    for (unsigned int e = 0; e < body.elements().size(); ++e)
+      {
+        typename SimplexElement<dim>::NodePositions x;
+        for (unsigned int a = 0; a <= dim; ++a)
+          {
+            const unsigned int node = body.element_nodes()[e][a];
+            x[a] = body.positions()[node] + DofSpace<dim>::get(u, node);
+          }
+        const Tensor<2, dim> F = body.elements()[e].deformation_gradient(x);
+        const Tensor<4, dim> C = body.material().tangent(F, false);
+        if ((body.material().tangent(F, true) - C).norm() > 1e-12 * C.norm())
+          ++n;
+      }
+    return n;
+  }
+
+
+
   struct NewtonHistory
   {
     /** ||p_k||_inf of every iteration k = 0, 1, ... */
@@ -239,9 +293,10 @@ namespace bfemp_tests
   };
 
   /**
-   * Plain projected Newton on @p potential with full steps (no line
-   * search): p = -H^-1 g from the potential's projected gradient and
-   * Hessian, u <- u + p, until ||p||_inf < @p tolerance or
+   * Plain Newton on @p potential with full steps (no line search):
+   * p = -H^-1 g from the potential's projected gradient and its Hessian of
+   * @p kind (projected: projected Newton), u <- u + p, until ||p||_inf < @p
+   * tolerance or
    * @p max_iterations. Every residual is recorded.
    */
   template <int dim>
@@ -250,14 +305,15 @@ namespace bfemp_tests
               LinearSolver              &solver,
               Vector<double>            &u,
               const double               tolerance,
-              const unsigned int         max_iterations)
+              const unsigned int         max_iterations,
+              const HessianKind          kind = HessianKind::projected)
   {
     NewtonHistory  history;
     Vector<double> gradient, direction;
     for (unsigned int k = 0; k < max_iterations; ++k)
       {
         potential.gradient(u, gradient);
-        solver.factorize(potential.hessian(u));
+        solver.factorize(potential.hessian(u, kind));
         gradient *= -1.;
         solver.solve(gradient, direction);
         u += direction;

@@ -8,6 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -27,9 +28,10 @@ namespace bfemp
    * Each particle's terms form one local stencil: the particle and the FEM
    * nodes of the primitives within dhat. Its local Hessian (the subtracted
    * terms included, which is what makes them harmless) is projected onto
-   * the PSD cone, then carried to the unknowns by the chain rule of eq. 29,
-   * dx_q/du_i = w_iq I for grid nodes and the identity for FEM nodes.
-   * Kinematic (fully prescribed) FEM bodies contribute positions only.
+   * the PSD cone unless the exact Hessian is asked for, then carried to the
+   * unknowns by the chain rule of eq. 29, dx_q/du_i = w_iq I for grid nodes and
+   * the identity for FEM nodes. Kinematic (fully prescribed) FEM bodies
+   * contribute positions only.
    *
    * The step bound is collision detection along u + t p (ContactGeometry);
    * the Hessian's couplings follow the particles within dhat and grow
@@ -49,7 +51,7 @@ namespace bfemp
       double energy = 0.;
       /** d/d(x_q, x_nodes) of energy, (1 + nodes.size()) dim entries. */
       Vector<double> gradient;
-      /** Its PSD projection of the Hessian (only if asked for). */
+      /** The local Hessian of that kind (only if asked for). */
       FullMatrix<double> hessian;
       /** The distance to the nearest facet. */
       double distance = 0.;
@@ -85,13 +87,6 @@ namespace bfemp
     void
     set_scale(const double scale);
 
-    /**
-     * Whether local Hessians are projected onto the PSD cone (always in
-     * the solver; tests compare the raw Hessian with finite differences).
-     */
-    void
-    set_hessian_projection(const bool project);
-
     /** Forgets the couplings of the last step, registers the pairs near now. */
     void
     begin_step(const Vector<double> &u);
@@ -121,7 +116,8 @@ namespace bfemp
 
     void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const override;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const override;
 
     double
     step_bound(const Vector<double> &u, const Vector<double> &p) const override;
@@ -133,9 +129,13 @@ namespace bfemp
     double
     minimum_distance(const Vector<double> &u) const override;
 
-    /** The contact of every particle within dhat at u. */
+    /**
+     * The contact of every particle within dhat at u, with local Hessians of
+     * kind @p hessian if one is given.
+     */
     std::vector<ParticleContact>
-    contacts(const Vector<double> &u, const bool with_hessian) const;
+    contacts(const Vector<double>             &u,
+             const std::optional<HessianKind> &hessian = {}) const;
 
     Measurement
     measure(const Vector<double> &u) const;
@@ -159,7 +159,7 @@ namespace bfemp
              const unsigned int                              k,
              const std::vector<std::vector<Point<dim>>>     &x,
              const Vector<double>                           &u,
-             const bool with_hessian) const;
+             const std::optional<HessianKind>               &hessian) const;
 
     /** Unified nodes of a contact's stencil (grid stencil, then FEM). */
     std::vector<unsigned int>
@@ -167,8 +167,7 @@ namespace bfemp
 
     ContactGeometry<dim>    &contact_geometry;
     const ContactParameters &parameters;
-    double                   scale   = 1.;
-    bool                     project = true;
+    double                   scale = 1.;
     /** FEM unified nodes coupled to each particle in the pattern. */
     mutable std::vector<std::vector<unsigned int>> registered;
     /**

@@ -64,6 +64,13 @@ namespace bfemp
     projected_first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const;
 
     /**
+     * dP/dF at F, or its positive semi-definite projection if @p projected:
+     * what the Hessian of the kind an energy term assembles needs.
+     */
+    Tensor<4, dim>
+    tangent(const Tensor<2, dim> &F, const bool projected) const;
+
+    /**
      * dim (2 mu + |lambda|) [Pa]: the size of the terms an energy density
      * near F = I is the small difference of, for round-off estimates.
      */

@@ -44,6 +44,10 @@ namespace bfemp
     void
     factorize(const SparseMatrix<double> &matrix) override;
 
+    /** As factorize(), but false instead of the error if not definite. */
+    bool
+    factorize_if_positive_definite(const SparseMatrix<double> &matrix) override;
+
     void
     solve(const Vector<double> &rhs, Vector<double> &solution) override;
 
@@ -64,6 +68,9 @@ namespace bfemp
 
     /** Whether the last factorize() succeeded. */
     bool factorized = false;
+
+    /** The pivot at which the last failed factorization broke down. */
+    std::size_t failed_pivot = 0;
   };
 } // namespace bfemp
 

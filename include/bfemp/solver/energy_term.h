@@ -15,12 +15,33 @@ namespace bfemp
   using namespace dealii;
 
   /**
+   * Which second derivative EnergyTerm::add_hessian() assembles.
+   */
+  enum class HessianKind
+  {
+    /**
+     * Every local Hessian (of a particle, element or contact) projected onto
+     * the positive semi-definite cone before assembly: the sum is PSD by
+     * construction (projected Newton, BFEMP Section 5).
+     */
+    projected,
+    /**
+     * The exact second derivative where the term has one; the sum may be
+     * indefinite. Terms that are approximations anyway (lagged friction)
+     * add the same matrix as for projected.
+     */
+    exact
+  };
+
+
+
+  /**
    * One additive part of the incremental potential E(u) of BFEMP eq. 22 (and
    * eq. 38 once contact and friction join): inertia, FEM elasticity, MPM
    * elasticity, ... Each is a function of the unified displacement vector u
    * (see DofSpace) and supplies what projected Newton needs: its value,
-   * gradient, a positive semi-definite Hessian (local Hessians projected
-   * before assembly) and the largest admissible step along a direction.
+   * gradient, its Hessian (exact, or with local Hessians projected before
+   * assembly) and the largest admissible step along a direction.
    */
   template <int dim>
   class EnergyTerm
@@ -43,10 +64,14 @@ namespace bfemp
     virtual void
     add_gradient(const Vector<double> &u, Vector<double> &gradient) const = 0;
 
-    /** Adds a positive semi-definite approximation of the Hessian. */
+    /**
+     * Adds the Hessian at u: the exact one or its positive semi-definite
+     * approximation, as @p kind asks.
+     */
     virtual void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const = 0;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const = 0;
 
     /**
      * The smallest t > 0 at which u + t p leaves the term's domain (a det F

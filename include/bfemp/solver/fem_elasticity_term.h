@@ -45,7 +45,8 @@ namespace bfemp
 
     void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const override;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const override;
 
     /** Smallest positive root over elements of det T_e(x + t p) = 0. */
     double

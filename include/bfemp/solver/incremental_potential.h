@@ -53,11 +53,13 @@ namespace bfemp
     gradient(const Vector<double> &u, Vector<double> &gradient) const;
 
     /**
-     * P H(u) P + (I - P) with H the sum of the terms' PSD Hessians. Rebuilds
-     * the sparsity pattern first if a term's couplings at u outgrew it.
+     * P H(u) P + (I - P) with H the sum of the terms' Hessians of @p kind.
+     * Rebuilds the sparsity pattern first if a term's couplings at u outgrew
+     * it.
      */
     const SparseMatrix<double> &
-    hessian(const Vector<double> &u);
+    hessian(const Vector<double> &u,
+            const HessianKind     kind = HessianKind::projected);
 
     /**
      * The smallest step bound of any term along p; @p limiting (if given)

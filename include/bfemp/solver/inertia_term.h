@@ -41,7 +41,8 @@ namespace bfemp
 
     void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const override;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const override;
 
   private:
     std::vector<double> mass;

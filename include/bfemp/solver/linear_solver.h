@@ -52,6 +52,16 @@ namespace bfemp
     factorize(const SparseMatrix<double> &matrix) = 0;
 
     /**
+     * factorize() for a symmetric @p matrix that may be indefinite (the
+     * exact Hessian): returns false, with nothing factorized, where the
+     * solver finds it is not positive definite. Solvers that cannot tell
+     * (LU, CG) factorize and return true; their caller must check that the
+     * direction descends.
+     */
+    virtual bool
+    factorize_if_positive_definite(const SparseMatrix<double> &matrix);
+
+    /**
      * Solves matrix * solution = rhs with the matrix of the last successful
      * factorize(). @p solution is resized as needed; its content on entry is
      * ignored.

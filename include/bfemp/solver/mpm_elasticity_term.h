@@ -64,7 +64,8 @@ namespace bfemp
 
     void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const override;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const override;
 
     /** Smallest positive root over particles of det F_p(u + t p) = 0. */
     double
@@ -84,7 +85,9 @@ namespace bfemp
 
     template <int degree>
     void
-    add_hessian(const Vector<double> &u, SparseMatrix<double> &hessian) const;
+    add_hessian(const Vector<double> &u,
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const;
 
     template <int degree>
     double

@@ -29,6 +29,11 @@ namespace bfemp
     /** Constraint moves that carried the free DoFs along (their linear
      *  response), because that let the move go further. */
     unsigned int carried_constraint_moves = 0;
+    /**
+     * Iterations whose direction came from the projected Hessian: all with
+     * 'Hessian projection = always', the fall-backs with 'when indefinite'.
+     */
+    unsigned int projected_hessians = 0;
     /** ||p||_inf / dt of the last iteration [m/s]. */
     double residual = 0.;
     /** E at the minimizer. */
@@ -50,11 +55,12 @@ namespace bfemp
 
   /**
    * Projected Newton with a filtered backtracking line search (BFEMP
-   * Algorithm 2). Each iteration assembles the gradient and the projected
-   * (PSD) Hessian, solves H p = -g, starts the line search at the fraction
-   * 'step bound fraction' of the largest step that keeps every det F > 0
-   * (and every contact distance > 0), capped at 1, and halves it until the
-   * Armijo condition holds. It stops when ||p||_inf / dt < eps_d.
+   * Algorithm 2). Each iteration assembles the gradient and the Hessian
+   * (the exact one where it is positive definite, else the projected PSD
+   * one; 'solver/Hessian projection'), solves H p = -g, starts the line search
+   * at the fraction 'step bound fraction' of the largest step that keeps every
+   * det F > 0 (and every contact distance > 0), capped at 1, and halves it
+   * until the Armijo condition holds. It stops when ||p||_inf / dt < eps_d.
    */
   template <int dim>
   class NewtonSolver
@@ -84,6 +90,20 @@ namespace bfemp
     linear_solver() const;
 
   private:
+    /**
+     * The Newton direction p of H p = -g with the Hessian of @p kind. For
+     * the exact Hessian, false if it is not positive definite (or, with a
+     * solver that cannot tell, if p does not descend); the projected one
+     * always gives a direction (BFEMP Algorithm 2).
+     */
+    bool
+    newton_direction(IncrementalPotential<dim> &potential,
+                     const Vector<double>      &u,
+                     const Vector<double>      &minus_gradient,
+                     const HessianKind          kind,
+                     Vector<double>            &direction,
+                     NewtonStatistics          &statistics) const;
+
     /**
      * Moves the constrained components of @p u towards their targets and
      * the obstacles towards the ends of their paths by the largest common

@@ -50,7 +50,8 @@ namespace bfemp
 
     void
     add_hessian(const Vector<double> &u,
-                SparseMatrix<double> &hessian) const override;
+                SparseMatrix<double> &hessian,
+                const HessianKind     kind) const override;
 
     double
     step_bound(const Vector<double> &u, const Vector<double> &p) const override;

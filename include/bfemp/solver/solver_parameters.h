@@ -22,6 +22,12 @@ namespace bfemp
     unsigned int maximum_newton_iterations = 100;
     /** "CHOLMOD", "UMFPACK" or "CG AMG". */
     std::string linear_solver = "CHOLMOD";
+    /**
+     * "always": every local Hessian projected onto the PSD cone (projected
+     * Newton as in the paper); "when indefinite": the exact Hessian where it
+     * is positive definite, the projected one otherwise.
+     */
+    std::string hessian_projection = "when indefinite";
     /** Relative residual of CG with AMG. */
     double cg_tolerance = 1e-10;
     /** Sufficient-decrease constant c of E(x + tp) <= E(x) + c t g.p. */
