@@ -232,24 +232,38 @@ namespace bfemp
     const SparseMatrix<double> &hessian = potential.hessian(u, kind);
     statistics.assembly_time += timer.wall_time();
 
-    timer.restart();
-    bool definite = true;
-    if (kind == HessianKind::exact)
-      definite = solver->factorize_if_positive_definite(hessian);
-    else
-      solver->factorize(hessian);
-    statistics.factorization_time += timer.wall_time();
-    if (!definite)
-      return false;
-
-    timer.restart();
-    solver->solve(minus_gradient, direction);
-    // P H P + (I - P) keeps p = P p only up to round-off of the size of
-    // H; projecting again keeps slanted slip constraints exact.
-    potential.dof_space().project(direction);
-    statistics.solve_time += timer.wall_time();
     if (kind == HessianKind::projected)
-      return true;
+      {
+        timer.restart();
+        solver->factorize(hessian);
+        statistics.factorization_time += timer.wall_time();
+        timer.restart();
+        solver->solve(minus_gradient, direction);
+        // P H P + (I - P) keeps p = P p only up to round-off of the size of
+        // H; projecting again keeps slanted slip constraints exact.
+        potential.dof_space().project(direction);
+        statistics.solve_time += timer.wall_time();
+        return true;
+      }
+
+    // An exact Hessian may also be singular (LU) or stall CG: any failure of
+    // the linear solver on it hands the iteration to the projected one.
+    try
+      {
+        timer.restart();
+        const bool definite = solver->factorize_if_positive_definite(hessian);
+        statistics.factorization_time += timer.wall_time();
+        if (!definite)
+          return false;
+        timer.restart();
+        solver->solve(minus_gradient, direction);
+        potential.dof_space().project(direction);
+        statistics.solve_time += timer.wall_time();
+      }
+    catch (const SimulationError &)
+      {
+        return false;
+      }
     // Solvers that cannot detect indefiniteness: a direction that does not
     // descend (or is not finite) came from an indefinite matrix.
     const double slope = -(minus_gradient * direction);

@@ -20,9 +20,9 @@
 //    ratios above round-off stay above 1e-3) and in more iterations;
 //  - NewtonSolver with 'when indefinite' needs fewer iterations than with
 //    'always', falls back to the projected Hessian in none of them near the
-//    solution, and both reach the full-Newton minimizer; with UMFPACK (no
-//    definiteness test, the descent check instead) 'when indefinite' gives
-//    the same.
+//    solution, and both reach the full-Newton minimizer; with UMFPACK and
+//    CG AMG (no definiteness test, the descent check instead) 'when
+//    indefinite' gives the same.
 // Residual histories go to stdout; the output holds counts and checks.
 
 #include <bfemp/base/input_error.h>
@@ -154,18 +154,21 @@ namespace
           what + "both reach the same minimizer");
 
     // The library's NewtonSolver with each setting.
-    Vector<double>         u_always, u_exact_solver, u_umfpack;
+    Vector<double>         u_always, u_exact_solver, u_umfpack, u_cg;
     const NewtonStatistics always =
       solve_with(scene, "always", "CHOLMOD", u_always);
     const NewtonStatistics when_indefinite =
       solve_with(scene, "when indefinite", "CHOLMOD", u_exact_solver);
     const NewtonStatistics umfpack =
       solve_with(scene, "when indefinite", "UMFPACK", u_umfpack);
+    const NewtonStatistics cg =
+      solve_with(scene, "when indefinite", "CG AMG", u_cg);
     std::cout << what << "NewtonSolver iterations: always " << always.iterations
               << ", when indefinite " << when_indefinite.iterations << " ("
               << when_indefinite.projected_hessians << " projected), UMFPACK "
               << umfpack.iterations << " (" << umfpack.projected_hessians
-              << " projected)" << std::endl;
+              << " projected), CG AMG " << cg.iterations << " ("
+              << cg.projected_hessians << " projected)" << std::endl;
     check(always.projected_hessians == always.iterations,
           what + "'always' projects in every iteration");
     check(when_indefinite.iterations < always.iterations,
@@ -174,10 +177,14 @@ namespace
           what + "'when indefinite' uses the exact Hessian");
     check(umfpack.iterations == when_indefinite.iterations,
           what + "UMFPACK (descent check) takes the same iterations");
+    check(cg.iterations < always.iterations &&
+            cg.projected_hessians < cg.iterations,
+          what + "CG AMG (descent check) uses the exact Hessian too");
     for (const auto &[name, v] :
          {std::make_pair("always", &u_always),
           std::make_pair("when indefinite", &u_exact_solver),
-          std::make_pair("UMFPACK", &u_umfpack)})
+          std::make_pair("UMFPACK", &u_umfpack),
+          std::make_pair("CG AMG", &u_cg)})
       {
         Vector<double> d(*v);
         d -= u_exact;
