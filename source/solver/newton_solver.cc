@@ -232,38 +232,34 @@ namespace bfemp
     const SparseMatrix<double> &hessian = potential.hessian(u, kind);
     statistics.assembly_time += timer.wall_time();
 
-    if (kind == HessianKind::projected)
+    // An exact Hessian may also be singular (LU) or stall CG: any failure of
+    // the linear solver on it hands the iteration to the projected one.
+    try
       {
         timer.restart();
-        solver->factorize(hessian);
+        bool factorized = true;
+        if (kind == HessianKind::projected)
+          solver->factorize(hessian);
+        else
+          factorized = solver->factorize_if_positive_definite(hessian);
         statistics.factorization_time += timer.wall_time();
+        if (!factorized)
+          return false;
         timer.restart();
         solver->solve(minus_gradient, direction);
         // P H P + (I - P) keeps p = P p only up to round-off of the size of
         // H; projecting again keeps slanted slip constraints exact.
         potential.dof_space().project(direction);
         statistics.solve_time += timer.wall_time();
-        return true;
-      }
-
-    // An exact Hessian may also be singular (LU) or stall CG: any failure of
-    // the linear solver on it hands the iteration to the projected one.
-    try
-      {
-        timer.restart();
-        const bool definite = solver->factorize_if_positive_definite(hessian);
-        statistics.factorization_time += timer.wall_time();
-        if (!definite)
-          return false;
-        timer.restart();
-        solver->solve(minus_gradient, direction);
-        potential.dof_space().project(direction);
-        statistics.solve_time += timer.wall_time();
       }
     catch (const SimulationError &)
       {
+        if (kind == HessianKind::projected)
+          throw;
         return false;
       }
+    if (kind == HessianKind::projected)
+      return true;
     // Solvers that cannot detect indefiniteness: a direction that does not
     // descend (or is not finite) came from an indefinite matrix.
     const double slope = -(minus_gradient * direction);
