@@ -502,6 +502,15 @@ namespace bfemp
 
 
   template <int dim>
+  void
+  ImplicitIntegrator<dim>::resume_friction_dissipation(const double accumulated)
+  {
+    last_contact.accumulated_dissipation = accumulated;
+  }
+
+
+
+  template <int dim>
   const ContactStatistics<dim> &
   ImplicitIntegrator<dim>::contact_statistics() const
   {

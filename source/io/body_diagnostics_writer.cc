@@ -1,5 +1,6 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/io/body_diagnostics_writer.h>
+#include <bfemp/io/csv_file.h>
 
 #include <iomanip>
 #include <sstream>
@@ -41,19 +42,18 @@ namespace bfemp
 
   template <int dim>
   BodyDiagnosticsWriter<dim>::BodyDiagnosticsWriter(
-    const std::string &path,
-    const unsigned int n_mpm_bodies,
-    const unsigned int n_fem_bodies)
-    : file(path)
+    const std::string                 &path,
+    const unsigned int                 n_mpm_bodies,
+    const unsigned int                 n_fem_bodies,
+    const std::optional<unsigned int> &resume_after_step)
   {
-    if (!file)
-      throw SimulationError("cannot open " + path + " for writing");
-    file << "step,time";
+    std::ostringstream header;
+    header << "step,time";
     for (unsigned int m = 0; m < n_mpm_bodies; ++m)
-      write_body_header(file, "mpm" + std::to_string(m), dim);
+      write_body_header(header, "mpm" + std::to_string(m), dim);
     for (unsigned int f = 0; f < n_fem_bodies; ++f)
-      write_body_header(file, "fem" + std::to_string(f), dim);
-    file << std::endl;
+      write_body_header(header, "fem" + std::to_string(f), dim);
+    open_csv_file(file, path, header.str(), resume_after_step);
   }
 
 

@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/io/csv_file.h>
 #include <bfemp/io/diagnostics_writer.h>
 
 #include <iomanip>
@@ -7,41 +8,42 @@
 namespace bfemp
 {
   template <int dim>
-  DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
-                                            const bool         implicit,
-                                            const bool         substepped)
-    : file(path)
-    , implicit(implicit)
+  DiagnosticsWriter<dim>::DiagnosticsWriter(
+    const std::string                 &path,
+    const bool                         implicit,
+    const bool                         substepped,
+    const std::optional<unsigned int> &resume_after_step)
+    : implicit(implicit)
     , substepped(substepped)
   {
-    write_header();
+    open_csv_file(file, path, header(), resume_after_step);
   }
 
 
 
   template <int dim>
-  DiagnosticsWriter<dim>::DiagnosticsWriter(const std::string &path,
-                                            const unsigned int n_mpm,
-                                            const unsigned int n_fem,
-                                            const bool         substepped)
-    : file(path)
-    , implicit(true)
+  DiagnosticsWriter<dim>::DiagnosticsWriter(
+    const std::string                 &path,
+    const unsigned int                 n_mpm,
+    const unsigned int                 n_fem,
+    const bool                         substepped,
+    const std::optional<unsigned int> &resume_after_step)
+    : implicit(true)
     , with_contact(true)
     , substepped(substepped)
     , n_mpm_bodies(n_mpm)
     , n_fem_bodies(n_fem)
   {
-    write_header();
+    open_csv_file(file, path, header(), resume_after_step);
   }
 
 
 
   template <int dim>
-  void
-  DiagnosticsWriter<dim>::write_header()
+  std::string
+  DiagnosticsWriter<dim>::header() const
   {
-    if (!file)
-      throw SimulationError("cannot open the diagnostics file for writing");
+    std::ostringstream file;
     file << "step,time,dt,kinetic_energy,elastic_energy,gravitational_energy,"
             "total_energy";
     const char *axis[3] = {"x", "y", "z"};
@@ -70,7 +72,7 @@ namespace bfemp
       }
     if (substepped)
       file << ",substeps";
-    file << std::endl;
+    return file.str();
   }
 
 

@@ -126,5 +126,15 @@ namespace bfemp
 
 
   template class FemOutput<2>;
+  template <int dim>
+  void
+  FemOutput<dim>::resume(const unsigned int next_snapshot)
+  {
+    for (PvdSeries &s : series)
+      s.resume(next_snapshot);
+  }
+
+
+
   template class FemOutput<3>;
 } // namespace bfemp

@@ -92,5 +92,14 @@ namespace bfemp
 
 
   template class GridOutput<2>;
+  template <int dim>
+  void
+  GridOutput<dim>::resume(const unsigned int next_snapshot)
+  {
+    series.resume(next_snapshot);
+  }
+
+
+
   template class GridOutput<3>;
 } // namespace bfemp

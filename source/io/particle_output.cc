@@ -4,6 +4,8 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+
 namespace bfemp
 {
   template <int dim>
@@ -55,10 +57,23 @@ namespace bfemp
             "cauchy_stress",
             DataComponentInterpretation::component_is_part_of_tensor)};
 
+    // Points in particle-id order: the handler's own order depends on the
+    // history of cell changes (and differs after a restart), but a point's
+    // index in every snapshot should name the same particle.
+    std::vector<Particles::ParticleIterator<dim>> by_id;
+    by_id.reserve(particles.n_particles());
+    for (auto it = particles.handler().begin(); it != particles.handler().end();
+         ++it)
+      by_id.push_back(it);
+    std::sort(by_id.begin(), by_id.end(), [](const auto &a, const auto &b) {
+      return a->get_id() < b->get_id();
+    });
+
     std::vector<DataOutBase::Patch<0, dim>> patches;
     patches.reserve(particles.n_particles());
-    for (const auto &particle : particles.handler())
+    for (const auto &it : by_id)
       {
+        const auto                &particle = *it;
         const auto                 p = particle.get_properties();
         DataOutBase::Patch<0, dim> patch;
         patch.vertices[0]          = particle.get_location();
@@ -101,5 +116,14 @@ namespace bfemp
 
 
   template class ParticleOutput<2>;
+  template <int dim>
+  void
+  ParticleOutput<dim>::resume(const unsigned int next_snapshot)
+  {
+    series.resume(next_snapshot);
+  }
+
+
+
   template class ParticleOutput<3>;
 } // namespace bfemp

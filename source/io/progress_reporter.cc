@@ -15,12 +15,40 @@ namespace bfemp
 
 
 
+  void
+  ProgressReporter::resume(const double start_time,
+                           const double earlier_wall_time)
+  {
+    this->start_time        = start_time;
+    this->earlier_wall_time = earlier_wall_time;
+  }
+
+
+
   double
-  ProgressReporter::wall_time() const
+  ProgressReporter::elapsed() const
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                          start)
       .count();
+  }
+
+
+
+  double
+  ProgressReporter::wall_time() const
+  {
+    return earlier_wall_time + elapsed();
+  }
+
+
+
+  double
+  ProgressReporter::remaining(const double time) const
+  {
+    return time > start_time
+             ? elapsed() * (end_time - time) / (time - start_time)
+             : 0.;
   }
 
 
@@ -36,9 +64,6 @@ namespace bfemp
   {
     if (!enabled)
       return;
-    const double elapsed = wall_time();
-    const double remaining =
-      time > 0. ? elapsed * (end_time - time) / time : 0.;
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
         << std::defaultfloat << "  Newton " << std::setw(3) << newton_iterations
@@ -47,8 +72,9 @@ namespace bfemp
       out << "  contacts " << contact_pairs;
     if (substeps > 0)
       out << "  substeps " << substeps;
-    out << std::fixed << std::setprecision(1) << "  wall " << elapsed
-        << " s  left ~" << remaining << " s" << std::defaultfloat << std::endl;
+    out << std::fixed << std::setprecision(1) << "  wall " << wall_time()
+        << " s  left ~" << remaining(time) << " s" << std::defaultfloat
+        << std::endl;
   }
 
 
@@ -61,15 +87,13 @@ namespace bfemp
   {
     if (!enabled)
       return;
-    const double elapsed = wall_time();
-    const double remaining =
-      time > 0. ? elapsed * (end_time - time) / time : 0.;
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
         << std::defaultfloat;
     if (substeps > 0)
       out << "  substeps " << substeps;
-    out << std::fixed << std::setprecision(1) << "  wall " << elapsed
-        << " s  left ~" << remaining << " s" << std::defaultfloat << std::endl;
+    out << std::fixed << std::setprecision(1) << "  wall " << wall_time()
+        << " s  left ~" << remaining(time) << " s" << std::defaultfloat
+        << std::endl;
   }
 } // namespace bfemp

@@ -2,7 +2,6 @@
 #include <bfemp/particles/particle_system.h>
 
 #include <cmath>
-
 #include <sstream>
 
 namespace bfemp
@@ -66,6 +65,75 @@ namespace bfemp
 
 
   template <int dim>
+  typename ParticleSystem<dim>::Records
+  ParticleSystem<dim>::gather_in_loop_order() const
+  {
+    Records records;
+    records.properties.reserve(n_particles_total * Layout::n_properties);
+    records.ids.reserve(n_particles_total);
+    records.locations.reserve(n_particles_total);
+    for (const auto &stripe : stripes)
+      for (const auto &cell : stripe)
+        for (const auto &particle : particle_handler.particles_in_cell(cell))
+          {
+            const auto properties = particle.get_properties();
+            records.properties.insert(records.properties.end(),
+                                      properties.begin(),
+                                      properties.end());
+            records.ids.push_back(particle.get_id());
+            records.locations.push_back(particle.get_location());
+          }
+    return records;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::insert_records(const Records &records)
+  {
+    const unsigned int  n_properties = Layout::n_properties;
+    const Lattice<dim> &lattice      = grid.lattice();
+    particle_handler.clear_particles();
+    for (std::size_t k = 0; k < records.ids.size(); ++k)
+      {
+        const Point<dim> &x    = records.locations[k];
+        const auto        cell = lattice.cell_of(x);
+        particle_handler.insert_particle(
+          x,
+          reference_location<dim>(lattice, cell, x),
+          records.ids[k],
+          grid.cell(cell),
+          ArrayView<const double>(records.properties.data() + k * n_properties,
+                                  n_properties));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::replace_all(const Records &records)
+  {
+    AssertThrow(records.locations.size() == records.ids.size() &&
+                  records.properties.size() ==
+                    records.ids.size() * Layout::n_properties,
+                ExcMessage("inconsistent particle records"));
+    for (std::size_t k = 0; k < records.ids.size(); ++k)
+      if (!grid.stencil_inside(records.locations[k]))
+        throw SimulationError("particle " + std::to_string(records.ids[k]) +
+                              " at (" + to_input_string(records.locations[k]) +
+                              ") lies outside the usable grid");
+    insert_records(records);
+    next_id = 0;
+    for (const auto id : records.ids)
+      next_id = std::max(next_id, id + 1);
+    finish_insertion();
+  }
+
+
+
+  template <int dim>
   void
   ParticleSystem<dim>::store_in_loop_order()
   {
@@ -73,35 +141,7 @@ namespace bfemp
     // were inserted; after many cell changes a loop over cells jumps around
     // memory and is bound by cache misses. Re-inserting every particle in
     // loop order makes the loops stream through memory again.
-    const unsigned int                 n_properties = Layout::n_properties;
-    std::vector<double>                buffer;
-    std::vector<types::particle_index> ids;
-    std::vector<Point<dim>>            locations;
-    buffer.reserve(n_particles_total * n_properties);
-    ids.reserve(n_particles_total);
-    locations.reserve(n_particles_total);
-    for (const auto &stripe : stripes)
-      for (const auto &cell : stripe)
-        for (const auto &particle : particle_handler.particles_in_cell(cell))
-          {
-            const auto properties = particle.get_properties();
-            buffer.insert(buffer.end(), properties.begin(), properties.end());
-            ids.push_back(particle.get_id());
-            locations.push_back(particle.get_location());
-          }
-    particle_handler.clear_particles();
-    const Lattice<dim> &lattice = grid.lattice();
-    for (std::size_t k = 0; k < ids.size(); ++k)
-      {
-        const auto cell = lattice.cell_of(locations[k]);
-        particle_handler.insert_particle(
-          locations[k],
-          reference_location<dim>(lattice, cell, locations[k]),
-          ids[k],
-          grid.cell(cell),
-          ArrayView<const double>(buffer.data() + k * n_properties,
-                                  n_properties));
-      }
+    insert_records(gather_in_loop_order());
     // The number of particles is unchanged, so deal.II's cached counts (a
     // full pass over the particles to refresh) are not needed here.
     moved_since_ordering = 0;

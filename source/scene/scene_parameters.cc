@@ -249,6 +249,7 @@ namespace bfemp
     prm.leave_subsection();
     GridBoundaries<dim>::declare_parameters(prm, n_level_sets);
     OutputParameters::declare_parameters(prm);
+    CheckpointParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     for (unsigned int b = 0; b < n_fem_bodies; ++b)
@@ -280,6 +281,7 @@ namespace bfemp
     prm.leave_subsection();
     boundaries.parse_parameters(prm);
     output.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
     bodies.resize(prm.get_integer("number of bodies"));
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {

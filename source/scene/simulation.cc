@@ -422,15 +422,26 @@ namespace bfemp
 
   template <int dim>
   void
-  Simulation<dim>::prepare_output_folder()
+  Simulation<dim>::prepare_output_folder(const bool resuming)
   {
-    output_folder = parameters.output.directory + "/" + parameters.run.name;
     std::filesystem::create_directories(output_folder);
+    if (resuming)
+      {
+        // The continued run keeps the earlier output; its parameter file
+        // (which may differ, e.g. in the end time) is kept next to it.
+        std::filesystem::copy_file(
+          parameter_file,
+          output_folder + "/input_resumed_at_step_" + std::to_string(step) +
+            ".prm",
+          std::filesystem::copy_options::overwrite_existing);
+        return;
+      }
     // Files of an earlier run in the same folder would sit next to this
     // run's series and mislead; only bfemp's own file names are removed.
     const std::regex ours(
       "(particles|grid|fem_body_[0-9]+)(_[0-9]+\\.vtu|\\.pvd)(\\.part)?|"
-      "diagnostics\\.csv|bodies\\.csv");
+      "diagnostics\\.csv|bodies\\.csv|checkpoint\\.h5(\\.part)?|"
+      "input_resumed_at_step_[0-9]+\\.prm");
     for (const auto &entry : std::filesystem::directory_iterator(output_folder))
       if (entry.is_regular_file() &&
           std::regex_match(entry.path().filename().string(), ours))
@@ -467,11 +478,89 @@ namespace bfemp
 
 
   template <int dim>
+  std::string
+  Simulation<dim>::checkpoint_path() const
+  {
+    return output_folder + "/checkpoint.h5";
+  }
+
+
+
+  template <int dim>
+  std::optional<typename CheckpointFile<dim>::Progress>
+  Simulation<dim>::resume_from_checkpoint()
+  {
+    using Resume = CheckpointParameters::Resume;
+    const CheckpointFile<dim> checkpoint(checkpoint_path());
+    const Resume              resume = parameters.checkpoint.resume;
+    if (resume == Resume::never ||
+        (resume == Resume::if_present && !checkpoint.exists()))
+      return std::nullopt;
+    const std::string entry =
+      parameter_file + ": subsection 'checkpoint', entry 'resume' = " +
+      (resume == Resume::always ? "true" : "auto") + ": ";
+    if (!checkpoint.exists())
+      throw InputError(entry + "there is no checkpoint " + checkpoint.path() +
+                       " to continue from ('auto' starts at t = 0 when "
+                       "there is none)");
+    typename CheckpointFile<dim>::Progress progress;
+    try
+      {
+        progress = checkpoint.read(particle_system, fem_body_list);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError(entry + error.what());
+      }
+    if (implicit_integrator)
+      implicit_integrator->resume_friction_dissipation(
+        progress.friction_dissipation);
+    step         = progress.step;
+    current_time = progress.time;
+    snapshot     = progress.snapshot;
+    return progress;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::write_checkpoint(const double next_output,
+                                    const double wall_time) const
+  {
+    typename CheckpointFile<dim>::Progress progress;
+    progress.step        = step;
+    progress.time        = current_time;
+    progress.snapshot    = snapshot;
+    progress.next_output = next_output;
+    progress.wall_time   = wall_time;
+    if (implicit_integrator)
+      progress.friction_dissipation =
+        implicit_integrator->contact_statistics().accumulated_dissipation;
+    CheckpointFile<dim>(checkpoint_path())
+      .write(progress, particle_system, fem_body_list);
+  }
+
+
+
+  template <int dim>
   void
   Simulation<dim>::run()
   {
-    const RunParameters &run = parameters.run;
-    prepare_output_folder();
+    const RunParameters        &run        = parameters.run;
+    const CheckpointParameters &checkpoint = parameters.checkpoint;
+    output_folder      = parameters.output.directory + "/" + run.name;
+    const auto resumed = resume_from_checkpoint();
+    if (resumed && resumed->time >= run.end_time)
+      {
+        console << "bfemp: the checkpoint " << checkpoint_path()
+                << " is at t = " << resumed->time
+                << ", not before 'run/end time' = " << run.end_time
+                << "; nothing to do (a larger end time continues the run)"
+                << std::endl;
+        return;
+      }
+    prepare_output_folder(resumed.has_value());
     if (parameters.output.write_particles && particle_system.n_particles() > 0)
       particle_output =
         std::make_unique<ParticleOutput<dim>>(output_folder, materials);
@@ -480,22 +569,38 @@ namespace bfemp
     if (!fem_body_list.empty())
       fem_output =
         std::make_unique<FemOutput<dim>>(output_folder, fem_body_list);
+    std::optional<unsigned int> resume_step;
+    if (resumed)
+      {
+        resume_step = resumed->step;
+        if (particle_output)
+          particle_output->resume(snapshot);
+        if (grid_output)
+          grid_output->resume(snapshot);
+        if (fem_output)
+          fem_output->resume(snapshot);
+      }
     const bool with_contact =
       implicit_integrator && implicit_integrator->contact_statistics().active;
     DiagnosticsWriter<dim> diagnostics_writer =
       with_contact ? DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
                                             parameters.bodies.size(),
                                             parameters.fem_bodies.size(),
-                                            parameters.time.is_substepped())
+                                            parameters.time.is_substepped(),
+                                            resume_step)
                    : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
                                             implicit_integrator != nullptr,
-                                            parameters.time.is_substepped());
+                                            parameters.time.is_substepped(),
+                                            resume_step);
     BodyDiagnosticsWriter<dim> body_writer(output_folder + "/bodies.csv",
                                            parameters.bodies.size(),
-                                           parameters.fem_bodies.size());
+                                           parameters.fem_bodies.size(),
+                                           resume_step);
     ProgressReporter           progress(console,
                               run.end_time,
                               !run.quiet && !run.test_mode);
+    if (resumed)
+      progress.resume(resumed->time, resumed->wall_time);
 
     if (run.test_mode)
       console << "bfemp test run: " << dim << "D, " << scene_summary()
@@ -503,17 +608,29 @@ namespace bfemp
     else
       console << "bfemp: " << dim << "D, " << scene_summary() << "; output in "
               << output_folder << std::endl;
+    if (resumed)
+      console << "bfemp: continuing from " << checkpoint_path() << ": step "
+              << step << ", t = " << current_time << std::endl;
 
-    double               time  = 0.;
+    double               time  = current_time;
     StepDiagnostics<dim> state = diagnostics();
     check_state(state);
-    diagnostics_writer.write(step, time, 0., state, progress.wall_time());
-    write_body_diagnostics(body_writer);
-    write_snapshot(time);
-    if (run.test_mode)
-      print_test_summary(time, state);
+    if (!resumed)
+      {
+        diagnostics_writer.write(step, time, 0., state, progress.wall_time());
+        write_body_diagnostics(body_writer);
+        write_snapshot(time);
+        if (run.test_mode)
+          print_test_summary(time, state);
+      }
 
-    double next_output = parameters.output.interval;
+    double next_output =
+      resumed ? resumed->next_output : parameters.output.interval;
+    // Checkpoints are taken at steps that write a diagnostics row, where
+    // nothing is pending in newton_since_row.
+    double next_checkpoint      = time + checkpoint.interval;
+    double last_checkpoint_wall = progress.wall_time();
+    bool   saved_this_step      = resumed.has_value();
     while (time < run.end_time)
       {
         const double dt = next_time_step(time, state.max_speed);
@@ -521,10 +638,13 @@ namespace bfemp
         time         = (dt == run.end_time - time) ? run.end_time : time + dt;
         current_time = time;
         ++step;
+        saved_this_step = false;
 
         const bool snapshot_due =
           time >= next_output - 1e-9 * dt || time >= run.end_time;
-        if (snapshot_due || step % parameters.output.diagnostics_interval == 0)
+        const bool row_due =
+          snapshot_due || step % parameters.output.diagnostics_interval == 0;
+        if (row_due)
           {
             state = diagnostics();
             check_state(state);
@@ -578,7 +698,23 @@ namespace bfemp
           }
         else
           progress.report(step, time, dt, last_substeps);
+
+        const bool checkpoint_due =
+          (checkpoint.interval > 0. && time >= next_checkpoint - 1e-9 * dt) ||
+          (checkpoint.wall_time_interval > 0. &&
+           progress.wall_time() - last_checkpoint_wall >=
+             checkpoint.wall_time_interval);
+        if (row_due && checkpoint_due)
+          {
+            write_checkpoint(next_output, progress.wall_time());
+            saved_this_step      = true;
+            last_checkpoint_wall = progress.wall_time();
+            while (next_checkpoint <= time + 1e-9 * dt)
+              next_checkpoint += std::max(checkpoint.interval, dt);
+          }
       }
+    if (checkpoint.enabled() && !saved_this_step)
+      write_checkpoint(next_output, progress.wall_time());
     if (!run.test_mode)
       console << "bfemp: finished " << step << " steps in "
               << progress.wall_time() << " s" << std::endl;

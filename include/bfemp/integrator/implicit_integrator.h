@@ -100,6 +100,13 @@ namespace bfemp
     n_dofs() const;
 
     /** Contact state at the end of the last step. */
+    /**
+     * Continues the friction dissipation accumulated over the steps of a
+     * checkpointed run (ContactStatistics::accumulated_dissipation).
+     */
+    void
+    resume_friction_dissipation(const double accumulated);
+
     const ContactStatistics<dim> &
     contact_statistics() const;
 

@@ -4,6 +4,7 @@
 #include <bfemp/io/step_diagnostics.h>
 
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,12 @@ namespace bfemp
   class BodyDiagnosticsWriter
   {
   public:
-    BodyDiagnosticsWriter(const std::string &path,
-                          const unsigned int n_mpm_bodies,
-                          const unsigned int n_fem_bodies);
+    /** @p resume_after_step: see open_csv_file(). */
+    BodyDiagnosticsWriter(
+      const std::string                 &path,
+      const unsigned int                 n_mpm_bodies,
+      const unsigned int                 n_fem_bodies,
+      const std::optional<unsigned int> &resume_after_step = {});
 
     /** @p mpm and @p fem hold one measurement per body, in body order. */
     void

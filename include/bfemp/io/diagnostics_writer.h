@@ -6,6 +6,7 @@
 #include <bfemp/solver/newton_solver.h>
 
 #include <fstream>
+#include <optional>
 #include <string>
 
 namespace bfemp
@@ -26,11 +27,15 @@ namespace bfemp
      * With @p implicit, the rows end with the Newton statistics summed over
      * the steps since the previous row (iterations, line-search backtracks,
      * det F bound hits), the last residual ||p||_inf / dt, the unknowns and
-     * the assembly, factorization, solve and line-search times.
+     * the assembly, factorization, solve and line-search times. A run
+     * continued from the checkpoint of step @p resume_after_step appends to
+     * the file (open_csv_file()).
      */
-    DiagnosticsWriter(const std::string &path,
-                      const bool         implicit   = false,
-                      const bool         substepped = false);
+    DiagnosticsWriter(
+      const std::string                 &path,
+      const bool                         implicit          = false,
+      const bool                         substepped        = false,
+      const std::optional<unsigned int> &resume_after_step = {});
 
     /**
      * Scenes with particle-mesh contact add its columns: pairs within dhat,
@@ -42,10 +47,12 @@ namespace bfemp
      * contact force on every FEM body from every MPM body
      * (contact_force_m<m>_f<f>_<axis>).
      */
-    DiagnosticsWriter(const std::string &path,
-                      const unsigned int n_mpm_bodies,
-                      const unsigned int n_fem_bodies,
-                      const bool         substepped = false);
+    DiagnosticsWriter(
+      const std::string                 &path,
+      const unsigned int                 n_mpm_bodies,
+      const unsigned int                 n_fem_bodies,
+      const bool                         substepped        = false,
+      const std::optional<unsigned int> &resume_after_step = {});
 
     void
     write(const unsigned int            step,
@@ -59,8 +66,9 @@ namespace bfemp
           const unsigned int            substeps = 0);
 
   private:
-    void
-    write_header();
+    /** The column names, comma-separated. */
+    std::string
+    header() const;
 
     std::ofstream file;
     const bool    implicit;

@@ -28,6 +28,10 @@ namespace bfemp
     void
     write(const double time, const unsigned int snapshot);
 
+    /** Continues the series of a checkpointed run (PvdSeries::resume()). */
+    void
+    resume(const unsigned int next_snapshot);
+
   private:
     void
     write_body(const unsigned int b,

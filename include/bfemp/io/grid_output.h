@@ -25,6 +25,10 @@ namespace bfemp
           const double          time,
           const unsigned int    snapshot);
 
+    /** Continues the series of a checkpointed run (PvdSeries::resume()). */
+    void
+    resume(const unsigned int next_snapshot);
+
   private:
     std::string                folder;
     const BackgroundGrid<dim> &grid;

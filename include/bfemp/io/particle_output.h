@@ -13,7 +13,9 @@ namespace bfemp
 {
   /**
    * The particle snapshots of a run: particles_NNNNN.vtu files (one VTK
-   * vertex per particle) and particles.pvd listing them with their times.
+   * vertex per particle, in particle-id order, so that a point index names
+   * the same particle in every snapshot) and particles.pvd listing them with
+   * their times.
    * Point data: velocity, displacement (x - X), cauchy_stress (tensor),
    * von_mises, J, mass, material_id, body_id.
    */
@@ -29,6 +31,10 @@ namespace bfemp
     write(const ParticleSystem<dim> &particles,
           const double               time,
           const unsigned int         snapshot);
+
+    /** Continues the series of a checkpointed run (PvdSeries::resume()). */
+    void
+    resume(const unsigned int next_snapshot);
 
   private:
     std::string                                        folder;

@@ -35,15 +35,33 @@ namespace bfemp
            const int          contact_pairs = -1,
            const unsigned int substeps      = 0);
 
-    /** Wall seconds since construction. */
+    /**
+     * A run continued from a checkpoint at simulated time @p start_time,
+     * after @p earlier_wall_time wall seconds of the earlier parts: the wall
+     * time continues from there, the estimate uses this part's pace.
+     */
+    void
+    resume(const double start_time, const double earlier_wall_time);
+
+    /** Wall seconds of the run (since construction, plus earlier parts). */
     double
     wall_time() const;
 
   private:
+    /** Wall seconds since construction. */
+    double
+    elapsed() const;
+
+    /** Estimated wall seconds to the end time from simulated @p time. */
+    double
+    remaining(const double time) const;
+
     std::ostream                         &out;
     double                                end_time;
     bool                                  enabled;
     std::chrono::steady_clock::time_point start;
+    double                                start_time        = 0.;
+    double                                earlier_wall_time = 0.;
   };
 } // namespace bfemp
 

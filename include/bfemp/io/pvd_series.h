@@ -21,6 +21,15 @@ namespace bfemp
     void
     add(const double time, const std::string &vtu_file_name);
 
+    /**
+     * For a run continued from a checkpoint taken before snapshot
+     * @p next_snapshot: reads the existing .pvd (if any) and keeps the
+     * snapshots before that one (VTU names end in _<snapshot>.vtu); the VTU
+     * files of later ones, written after the checkpoint, are deleted.
+     */
+    void
+    resume(const unsigned int next_snapshot);
+
   private:
     std::string                                 pvd_path;
     std::vector<std::pair<double, std::string>> times_and_names;

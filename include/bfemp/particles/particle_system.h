@@ -34,6 +34,18 @@ namespace bfemp
 
     explicit ParticleSystem(const BackgroundGrid<dim> &grid);
 
+    /**
+     * Every particle's id, location and properties, in the order of the
+     * particle loops (what a checkpoint saves).
+     */
+    struct Records
+    {
+      std::vector<types::particle_index> ids;
+      std::vector<Point<dim>>            locations;
+      /** n_properties values per particle, particle after particle. */
+      std::vector<double> properties;
+    };
+
     /** Adds one particle at x with all its properties. */
     void
     insert(const Point<dim> &x, const ArrayView<const double> &properties);
@@ -50,6 +62,19 @@ namespace bfemp
 
     const Particles::ParticleHandler<dim> &
     handler() const;
+
+    /** All particles' data in loop order. */
+    Records
+    gather_in_loop_order() const;
+
+    /**
+     * Replaces all particles by @p records, inserted in their order and
+     * with their ids; loops then visit them in that order, so a state saved
+     * by gather_in_loop_order() continues bit for bit. Throws
+     * SimulationError if a particle's kernel stencil is outside the grid.
+     */
+    void
+    replace_all(const Records &records);
 
     /**
      * After the particles moved: puts each in the cell that now contains it
@@ -90,6 +115,10 @@ namespace bfemp
     /** Lists the non-empty cells of stripe @p s again. */
     void
     rebuild_stripe(const unsigned int s);
+
+    /** Clears the handler and inserts @p records in their order. */
+    void
+    insert_records(const Records &records);
 
     /** Re-inserts all particles so their data is in loop order in memory. */
     void

@@ -6,6 +6,7 @@
 #include <bfemp/contact/contact_parameters.h>
 #include <bfemp/fem/fem_body_parameters.h>
 #include <bfemp/grid/grid_parameters.h>
+#include <bfemp/io/checkpoint_parameters.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/io/output_parameters.h>
 #include <bfemp/particles/body_parameters.h>
@@ -37,6 +38,7 @@ namespace bfemp
     Tensor<1, dim>                      gravity;
     GridBoundaries<dim>                 boundaries;
     OutputParameters                    output;
+    CheckpointParameters                checkpoint;
     std::vector<BodyParameters<dim>>    bodies;
     std::vector<FemBodyParameters<dim>> fem_bodies;
     SolverParameters                    solver;

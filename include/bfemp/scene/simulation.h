@@ -7,6 +7,7 @@
 #include <bfemp/integrator/implicit_integrator.h>
 #include <bfemp/integrator/substepped_mpm.h>
 #include <bfemp/io/body_diagnostics_writer.h>
+#include <bfemp/io/checkpoint_file.h>
 #include <bfemp/io/diagnostics_writer.h>
 #include <bfemp/io/fem_output.h>
 #include <bfemp/io/grid_output.h>
@@ -19,6 +20,7 @@
 #include <bfemp/transfer/particle_grid_transfer.h>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <vector>
 
@@ -105,9 +107,28 @@ namespace bfemp
     void
     check_state(const StepDiagnostics<dim> &d) const;
 
-    /** Creates <directory>/<run name>/, clears bfemp files of older runs. */
+    /**
+     * Creates <directory>/<run name>/; a new run clears bfemp files of
+     * older runs there, a continued one keeps them.
+     */
     void
-    prepare_output_folder();
+    prepare_output_folder(const bool resuming);
+
+    /** <directory>/<run name>/checkpoint.h5. */
+    std::string
+    checkpoint_path() const;
+
+    /**
+     * If 'checkpoint/resume' asks for it: restores the state saved in the
+     * checkpoint and returns where the run stood; throws InputError naming
+     * the prm entry and the file if that is impossible.
+     */
+    std::optional<typename CheckpointFile<dim>::Progress>
+    resume_from_checkpoint();
+
+    /** Saves the state after the current step. */
+    void
+    write_checkpoint(const double next_output, const double wall_time) const;
 
     void
     write_snapshot(const double time);
