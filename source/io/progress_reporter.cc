@@ -64,6 +64,9 @@ namespace bfemp
   {
     if (!enabled)
       return;
+    // The console is shared: leave its format as it was.
+    const std::ios::fmtflags flags     = out.flags();
+    const std::streamsize    precision = out.precision();
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
         << std::defaultfloat << "  Newton " << std::setw(3) << newton_iterations
@@ -73,8 +76,9 @@ namespace bfemp
     if (substeps > 0)
       out << "  substeps " << substeps;
     out << std::fixed << std::setprecision(1) << "  wall " << wall_time()
-        << " s  left ~" << remaining(time) << " s" << std::defaultfloat
-        << std::endl;
+        << " s  left ~" << remaining(time) << " s" << std::endl;
+    out.flags(flags);
+    out.precision(precision);
   }
 
 
@@ -87,13 +91,17 @@ namespace bfemp
   {
     if (!enabled)
       return;
+    // The console is shared: leave its format as it was.
+    const std::ios::fmtflags flags     = out.flags();
+    const std::streamsize    precision = out.precision();
     out << "step " << std::setw(7) << step << "  t = " << std::setw(11)
         << std::scientific << std::setprecision(4) << time << "  dt = " << dt
         << std::defaultfloat;
     if (substeps > 0)
       out << "  substeps " << substeps;
     out << std::fixed << std::setprecision(1) << "  wall " << wall_time()
-        << " s  left ~" << remaining(time) << " s" << std::defaultfloat
-        << std::endl;
+        << " s  left ~" << remaining(time) << " s" << std::endl;
+    out.flags(flags);
+    out.precision(precision);
   }
 } // namespace bfemp

@@ -716,8 +716,9 @@ namespace bfemp
     if (checkpoint.enabled() && !saved_this_step)
       write_checkpoint(next_output, progress.wall_time());
     if (!run.test_mode)
-      console << "bfemp: finished " << step << " steps in "
-              << progress.wall_time() << " s" << std::endl;
+      console << "bfemp: finished " << step << " steps in " << std::fixed
+              << std::setprecision(1) << progress.wall_time() << " s"
+              << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 
 
