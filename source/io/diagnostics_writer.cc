@@ -45,7 +45,7 @@ namespace bfemp
   {
     std::ostringstream file;
     file << "step,time,dt,kinetic_energy,elastic_energy,gravitational_energy,"
-            "total_energy";
+            "total_energy,affine_kinetic_energy";
     const char *axis[3] = {"x", "y", "z"};
     for (unsigned int d = 0; d < dim; ++d)
       file << ",momentum_" << axis[d];
@@ -92,7 +92,8 @@ namespace bfemp
     std::ostringstream row;
     row << std::setprecision(12) << step << ',' << time << ',' << dt << ','
         << d.kinetic_energy << ',' << d.elastic_energy << ','
-        << d.gravitational_energy << ',' << d.total_energy();
+        << d.gravitational_energy << ',' << d.total_energy() << ','
+        << d.affine_kinetic_energy;
     for (unsigned int c = 0; c < dim; ++c)
       row << ',' << d.linear_momentum[c];
     for (unsigned int c = (dim == 2 ? 2 : 0); c < 3; ++c)

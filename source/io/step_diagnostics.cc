@@ -14,6 +14,7 @@ namespace bfemp
     kinetic_energy += other.kinetic_energy;
     elastic_energy += other.elastic_energy;
     gravitational_energy += other.gravitational_energy;
+    affine_kinetic_energy += other.affine_kinetic_energy;
     linear_momentum += other.linear_momentum;
     first_moment += other.first_moment;
     angular_momentum += other.angular_momentum;
@@ -91,6 +92,8 @@ namespace bfemp
     const unsigned int                                 body)
   {
     using Layout = ParticleLayout<dim>;
+    const bool apic =
+      transfer.parameters().scheme == TransferParameters::Scheme::apic;
     return particles.template sum<StepDiagnostics<dim>>(
       [&](const auto &particle) {
         const auto p = particle.get_properties();
@@ -111,6 +114,10 @@ namespace bfemp
         StepDiagnostics<dim> d;
         d.mass           = m;
         d.kinetic_energy = 0.5 * m * v.norm_square();
+        if (apic)
+          d.affine_kinetic_energy =
+            0.5 * m *
+            scalar_product(Layout::get_tensor(p, Layout::affine_velocity), B);
         d.elastic_energy = p[Layout::rest_volume] * material.energy_density(F);
         d.gravitational_energy = -m * (gravity * x);
         d.linear_momentum      = m * v;

@@ -21,10 +21,19 @@ namespace bfemp
   template <int dim>
   struct StepDiagnostics
   {
-    double         mass                 = 0.;
-    double         kinetic_energy       = 0.;
-    double         elastic_energy       = 0.;
-    double         gravitational_energy = 0.;
+    double mass                 = 0.;
+    double kinetic_energy       = 0.;
+    double elastic_energy       = 0.;
+    double gravitational_energy = 0.;
+    /**
+     * APIC only: sum 1/2 m_p C_p : (C_p D_p), the kinetic energy of the
+     * particles' affine velocity fields. P2G hands it to the grid along
+     * with 1/2 m_p |v_p|^2 (grid kinetic energy <= both together), so
+     * energy moving between the two shows up in kinetic_energy alone as a
+     * loss or a gain. Not part of total_energy(), which is the quantity
+     * the BFEMP paper plots.
+     */
+    double         affine_kinetic_energy = 0.;
     Tensor<1, dim> linear_momentum;
     /** sum m x: the centre of mass is first_moment / mass. */
     Tensor<1, dim> first_moment;
