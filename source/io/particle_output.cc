@@ -74,7 +74,7 @@ namespace bfemp
     for (const auto &it : by_id)
       {
         const auto                &particle = *it;
-        const auto                 p = particle.get_properties();
+        const auto                 p        = particle.get_properties();
         DataOutBase::Patch<0, dim> patch;
         patch.vertices[0]          = particle.get_location();
         patch.patch_index          = patches.size();

@@ -37,8 +37,8 @@ namespace
   {
     TransferScene<dim> scene(degree, TransferParameters::Scheme::apic);
     scene.insert_random(dim == 2 ? 300 : 150, true);
-    const auto   d    = scene.measure();
-    const double grid = grid_kinetic_energy(scene.particles_to_grid());
+    const auto        d    = scene.measure();
+    const double      grid = grid_kinetic_energy(scene.particles_to_grid());
     const std::string name =
       std::to_string(dim) + "D degree " + std::to_string(degree) + ": ";
     dealii::deallog << name << "random particles: grid / (kinetic + affine) "
@@ -66,8 +66,8 @@ namespace
       for (unsigned int b = 0; b < dim; ++b)
         {
           Tensor<1, 3> e;
-          e[b]                     = 1.;
-          C[a][b]                  = cross_product_3d(omega, e)[a];
+          e[b]    = 1.;
+          C[a][b] = cross_product_3d(omega, e)[a];
         }
     for (unsigned int q = 0; q < (dim == 2 ? 300u : 150u); ++q)
       {
@@ -77,9 +77,9 @@ namespace
       }
     scene.particles.finish_insertion();
 
-    const auto   d    = scene.measure();
-    const double grid = grid_kinetic_energy(scene.particles_to_grid());
-    const double total = d.kinetic_energy + d.affine_kinetic_energy;
+    const auto        d     = scene.measure();
+    const double      grid  = grid_kinetic_energy(scene.particles_to_grid());
+    const double      total = d.kinetic_energy + d.affine_kinetic_energy;
     const std::string name =
       std::to_string(dim) + "D degree " + std::to_string(degree) + ": ";
     dealii::deallog << name << "rigid rotation: affine / kinetic "

@@ -6,8 +6,8 @@
 #include <bfemp/contact/contact_parameters.h>
 #include <bfemp/fem/fem_body_parameters.h>
 #include <bfemp/grid/grid_parameters.h>
-#include <bfemp/io/checkpoint_parameters.h>
 #include <bfemp/integrator/time_parameters.h>
+#include <bfemp/io/checkpoint_parameters.h>
 #include <bfemp/io/output_parameters.h>
 #include <bfemp/particles/body_parameters.h>
 #include <bfemp/solver/solver_parameters.h>
