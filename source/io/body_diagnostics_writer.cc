@@ -53,7 +53,16 @@ namespace bfemp
       write_body_header(header, "mpm" + std::to_string(m), dim);
     for (unsigned int f = 0; f < n_fem_bodies; ++f)
       write_body_header(header, "fem" + std::to_string(f), dim);
-    open_csv_file(file, path, header.str(), resume_after_step);
+    added_columns = open_csv_file(file, path, header.str(), resume_after_step);
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::string> &
+  BodyDiagnosticsWriter<dim>::columns_added_on_resume() const
+  {
+    return added_columns;
   }
 
 

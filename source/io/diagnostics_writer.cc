@@ -16,7 +16,7 @@ namespace bfemp
     : implicit(implicit)
     , substepped(substepped)
   {
-    open_csv_file(file, path, header(), resume_after_step);
+    added_columns = open_csv_file(file, path, header(), resume_after_step);
   }
 
 
@@ -34,7 +34,16 @@ namespace bfemp
     , n_mpm_bodies(n_mpm)
     , n_fem_bodies(n_fem)
   {
-    open_csv_file(file, path, header(), resume_after_step);
+    added_columns = open_csv_file(file, path, header(), resume_after_step);
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::string> &
+  DiagnosticsWriter<dim>::columns_added_on_resume() const
+  {
+    return added_columns;
   }
 
 

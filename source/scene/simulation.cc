@@ -487,6 +487,23 @@ namespace bfemp
 
 
   template <int dim>
+  void
+  Simulation<dim>::report_added_columns(
+    const std::string              &file_name,
+    const std::vector<std::string> &columns) const
+  {
+    if (columns.empty())
+      return;
+    console << "bfemp: " << file_name << " was written by an older bfemp; "
+            << "its rows before the checkpoint hold nan in the new column(s)";
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      console << (c == 0 ? " " : ", ") << columns[c];
+    console << std::endl;
+  }
+
+
+
+  template <int dim>
   std::optional<typename CheckpointFile<dim>::Progress>
   Simulation<dim>::resume_from_checkpoint()
   {
@@ -609,8 +626,14 @@ namespace bfemp
       console << "bfemp: " << dim << "D, " << scene_summary() << "; output in "
               << output_folder << std::endl;
     if (resumed)
-      console << "bfemp: continuing from " << checkpoint_path() << ": step "
-              << step << ", t = " << current_time << std::endl;
+      {
+        console << "bfemp: continuing from " << checkpoint_path() << ": step "
+                << step << ", t = " << current_time << std::endl;
+        report_added_columns("diagnostics.csv",
+                             diagnostics_writer.columns_added_on_resume());
+        report_added_columns("bodies.csv",
+                             body_writer.columns_added_on_resume());
+      }
 
     double               time  = current_time;
     StepDiagnostics<dim> state = diagnostics();

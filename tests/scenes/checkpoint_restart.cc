@@ -8,14 +8,17 @@
 // a^n is rebuilt from the state), and explicit USL with the grid series.
 // Time steps and end times are binary fractions, so that the first part
 // ends exactly where the uninterrupted run passes, without a shortened
-// last step. Then the refusals: no checkpoint, a checkpoint of another
-// scene, a cut file, nothing left to run, and a new run that clears an old
-// checkpoint.
+// last step. A diagnostics.csv of an older bfemp (without a column that
+// this version writes) is continued with nan in the new column's earlier
+// rows; one with a column this version no longer writes is refused. Then the
+// refusals: no checkpoint, a checkpoint of another scene, a cut file,
+// nothing left to run, and a new run that clears an old checkpoint.
 
 #include <bfemp/base/input_error.h>
 #include <bfemp/scene/scene_parameters.h>
 #include <bfemp/scene/simulation.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -29,6 +32,9 @@ using namespace dealii;
 
 namespace
 {
+  /** What the last run() printed. */
+  std::string last_console;
+
   /**
    * Writes @p name.prm (the scene @p scene plus @p entries) and runs it;
    * returns the InputError message, or "" if the run finished.
@@ -57,6 +63,7 @@ namespace
         std::ostringstream   console;
         bfemp::Simulation<2> simulation(parameters, name + ".prm", console);
         simulation.run();
+        last_console = console.str();
         return "";
       }
     catch (const bfemp::InputError &error)
@@ -97,6 +104,43 @@ namespace
         rows.push_back(kept);
       }
     return rows;
+  }
+
+  /** The fields of a CSV line. */
+  std::vector<std::string>
+  fields_of(const std::string &line)
+  {
+    std::vector<std::string> fields;
+    std::stringstream        row(line);
+    for (std::string field; std::getline(row, field, ',');)
+      fields.push_back(field);
+    return fields;
+  }
+
+  /**
+   * Rewrites the CSV file @p path as an older bfemp might have written it:
+   * without the column @p removed (if not empty) and with an extra last
+   * column @p added holding 0 (if not empty).
+   */
+  void
+  rewrite_as_older_version(const std::string &path,
+                           const std::string &removed,
+                           const std::string &added)
+  {
+    const std::vector<std::string> lines   = lines_of(path);
+    const std::vector<std::string> columns = fields_of(lines[0]);
+    std::ofstream                  out(path);
+    for (unsigned int l = 0; l < lines.size(); ++l)
+      {
+        const std::vector<std::string> fields = fields_of(lines[l]);
+        std::string                    line;
+        for (unsigned int c = 0; c < fields.size(); ++c)
+          if (columns[c] != removed)
+            line += (line.empty() ? "" : ",") + fields[c];
+        if (!added.empty())
+          line += "," + (l == 0 ? added : std::string("0"));
+        out << line << '\n';
+      }
   }
 
   /** A VTU or PVD file without the comment that dates it. */
@@ -182,6 +226,77 @@ namespace
       "the continued run finishes");
     compare_outputs("results/" + label, "results/" + label + "_parts");
   }
+
+  /**
+   * Continues the first part of "contact_newmark" after removing the
+   * column affine_kinetic_energy from its diagnostics.csv, as if an older
+   * bfemp had written it: the rows must be those of the uninterrupted run,
+   * with nan in that column up to the checkpoint, and the console must say
+   * so. A file with a column this bfemp does not write is refused.
+   */
+  void
+  check_older_diagnostics(const std::string &entries)
+  {
+    deallog << "--- diagnostics.csv of an older bfemp" << std::endl;
+    const std::string name   = "older_version";
+    const std::string folder = "results/" + name;
+    const std::string part_1 = entries +
+                               "subsection run\n  set end time = 0.0625\n"
+                               "end\n"
+                               "subsection checkpoint\n  set interval = "
+                               "0.03125\nend\n";
+    const std::string part_2 = entries +
+                               "subsection run\n  set end time = 0.125\n"
+                               "end\n"
+                               "subsection checkpoint\n  set interval = "
+                               "0.03125\n  set resume = true\nend\n";
+    bfemp_tests::check(run(name, "demo_contact.prm", part_1).empty(),
+                       "the first part finishes");
+    const std::vector<std::string> first_part =
+      lines_of(folder + "/diagnostics.csv");
+    const std::string column = "affine_kinetic_energy";
+    rewrite_as_older_version(folder + "/diagnostics.csv", column, "");
+    bfemp_tests::check(run(name, "demo_contact.prm", part_2).empty(),
+                       "the run continues a file without " + column);
+    const std::size_t note = last_console.find("bfemp: diagnostics");
+    deallog << last_console.substr(note, last_console.find('\n', note) - note)
+            << std::endl;
+    bfemp_tests::check(last_console.find("diagnostics.csv was written by an "
+                                         "older bfemp") != std::string::npos &&
+                         last_console.find(column) != std::string::npos,
+                       "the console names the new column");
+
+    auto       continued = csv_without_timings(folder + "/diagnostics.csv");
+    const auto uninterrupted =
+      csv_without_timings("results/contact_newmark/diagnostics.csv");
+    const auto  header = continued[0];
+    const auto  where  = std::find(header.begin(), header.end(), column);
+    std::size_t n_nan  = 0;
+    for (unsigned int r = 1; r < continued.size(); ++r)
+      if (continued[r][where - header.begin()] == "nan")
+        {
+          ++n_nan;
+          continued[r][where - header.begin()] =
+            uninterrupted[r][where - header.begin()];
+        }
+    deallog << "rows " << continued.size() - 1 << ", nan in " << column << ": "
+            << n_nan << std::endl;
+    bfemp_tests::check(n_nan == first_part.size() - 1 &&
+                         continued == uninterrupted,
+                       "the continued file is the uninterrupted one with nan "
+                       "in the new column before the checkpoint");
+
+    bfemp_tests::check(run(name, "demo_contact.prm", part_1).empty(),
+                       "the first part finishes again");
+    rewrite_as_older_version(folder + "/diagnostics.csv", "", "retired_column");
+    const std::string refused = run(name, "demo_contact.prm", part_2);
+    deallog << refused << std::endl;
+    bfemp_tests::check(refused.find("retired_column") != std::string::npos &&
+                         refused.find(folder + "/diagnostics.csv") !=
+                           std::string::npos,
+                       "a file with a column this bfemp does not write is "
+                       "refused, naming the column and the file");
+  }
 } // namespace
 
 
@@ -222,6 +337,10 @@ main(int argc, char **argv)
                        "end\n",
                      0.125,
                      0.03125);
+  check_older_diagnostics(output + implicit_step +
+                          "subsection time\n"
+                          "  set integrator = implicit Newmark\n"
+                          "end\n");
   check_continuation("explicit_usl",
                      "default.prm",
                      output +

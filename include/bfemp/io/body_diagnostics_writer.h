@@ -37,8 +37,13 @@ namespace bfemp
           const std::vector<StepDiagnostics<dim>> &mpm,
           const std::vector<StepDiagnostics<dim>> &fem);
 
+    /** See DiagnosticsWriter::columns_added_on_resume(). */
+    const std::vector<std::string> &
+    columns_added_on_resume() const;
+
   private:
-    std::ofstream file;
+    std::ofstream            file;
+    std::vector<std::string> added_columns;
   };
 } // namespace bfemp
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace bfemp
 {
@@ -65,14 +66,22 @@ namespace bfemp
           const ContactStatistics<dim> &contact  = ContactStatistics<dim>(),
           const unsigned int            substeps = 0);
 
+    /**
+     * The columns that a continued run added to an existing file written by
+     * an older bfemp (open_csv_file()); empty for a new file.
+     */
+    const std::vector<std::string> &
+    columns_added_on_resume() const;
+
   private:
     /** The column names, comma-separated. */
     std::string
     header() const;
 
-    std::ofstream file;
-    const bool    implicit;
-    const bool    with_contact = false;
+    std::ofstream            file;
+    std::vector<std::string> added_columns;
+    const bool               implicit;
+    const bool               with_contact = false;
     /** A last column: the explicit substeps S of the macro step. */
     const bool   substepped   = false;
     unsigned int n_mpm_bodies = 0;

@@ -126,6 +126,14 @@ namespace bfemp
     std::optional<typename CheckpointFile<dim>::Progress>
     resume_from_checkpoint();
 
+    /**
+     * Tells which columns of @p file_name a continued run added (the earlier
+     * rows hold nan there), if any.
+     */
+    void
+    report_added_columns(const std::string              &file_name,
+                         const std::vector<std::string> &columns) const;
+
     /** Saves the state after the current step. */
     void
     write_checkpoint(const double next_output, const double wall_time) const;
