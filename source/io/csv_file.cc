@@ -2,6 +2,8 @@
 #include <bfemp/io/atomic_file.h>
 #include <bfemp/io/csv_file.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -11,19 +13,6 @@ namespace bfemp
 {
   namespace
   {
-    std::vector<std::string>
-    split_at_commas(const std::string &line)
-    {
-      std::vector<std::string> fields;
-      std::size_t              begin = 0;
-      for (std::size_t comma;
-           (comma = line.find(',', begin)) != std::string::npos;
-           begin = comma + 1)
-        fields.push_back(line.substr(begin, comma - begin));
-      fields.push_back(line.substr(begin));
-      return fields;
-    }
-
     std::string
     joined(const std::vector<std::string> &fields)
     {
@@ -43,9 +32,11 @@ namespace bfemp
                               const std::string &old_header,
                               const std::string &header)
     {
-      const std::vector<std::string> old_columns = split_at_commas(old_header);
-      const std::vector<std::string> columns     = split_at_commas(header);
-      std::vector<std::string>       dropped;
+      const std::vector<std::string> old_columns =
+        dealii::Utilities::split_string_list(old_header, ',');
+      const std::vector<std::string> columns =
+        dealii::Utilities::split_string_list(header, ',');
+      std::vector<std::string> dropped;
       for (const std::string &column : old_columns)
         if (std::find(columns.begin(), columns.end(), column) == columns.end())
           dropped.push_back(column);
@@ -93,7 +84,8 @@ namespace bfemp
       if (!same_columns)
         {
           old_index = old_column_of_each_column(path, line, header);
-          const std::vector<std::string> columns = split_at_commas(header);
+          const std::vector<std::string> columns =
+            dealii::Utilities::split_string_list(header, ',');
           for (unsigned int c = 0; c < columns.size(); ++c)
             if (old_index[c] < 0)
               added_columns.push_back(columns[c]);
@@ -110,8 +102,9 @@ namespace bfemp
               lines.push_back(line);
               continue;
             }
-          const std::vector<std::string> old_fields = split_at_commas(line);
-          std::vector<std::string>       fields;
+          const std::vector<std::string> old_fields =
+            dealii::Utilities::split_string_list(line, ',');
+          std::vector<std::string> fields;
           for (const int index : old_index)
             fields.push_back(index >= 0 && static_cast<std::size_t>(index) <
                                              old_fields.size()

@@ -82,6 +82,17 @@ namespace
     return lines;
   }
 
+  /** The fields of a CSV line. */
+  std::vector<std::string>
+  fields_of(const std::string &line)
+  {
+    std::vector<std::string> fields;
+    std::stringstream        row(line);
+    for (std::string field; std::getline(row, field, ',');)
+      fields.push_back(field);
+    return fields;
+  }
+
   /** The rows of a CSV file without the columns named *time (wall times). */
   std::vector<std::vector<std::string>>
   csv_without_timings(const std::string &path)
@@ -90,10 +101,8 @@ namespace
     std::vector<bool>                     keep;
     for (const std::string &line : lines_of(path))
       {
-        std::vector<std::string> fields, kept;
-        std::stringstream        row(line);
-        for (std::string field; std::getline(row, field, ',');)
-          fields.push_back(field);
+        const std::vector<std::string> fields = fields_of(line);
+        std::vector<std::string>       kept;
         if (keep.empty())
           for (const std::string &field : fields)
             keep.push_back(field == "time" || field.size() < 5 ||
@@ -104,17 +113,6 @@ namespace
         rows.push_back(kept);
       }
     return rows;
-  }
-
-  /** The fields of a CSV line. */
-  std::vector<std::string>
-  fields_of(const std::string &line)
-  {
-    std::vector<std::string> fields;
-    std::stringstream        row(line);
-    for (std::string field; std::getline(row, field, ',');)
-      fields.push_back(field);
-    return fields;
   }
 
   /**
