@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """BFEMP Section 6.7, 3D twist with friction: Figure 17 and Figure 16-like renders.
 
-    /usr/bin/python3 doc/experiments/plot_twist.py [OUTPUT_DIR] [PREFIX]
-    xvfb-run -a /usr/bin/python3 doc/experiments/plot_twist.py [OUTPUT_DIR] [PREFIX]
+    /usr/bin/python3 doc/experiments/plot_twist.py [OUTPUT_DIR] [PREFIX ...]
+    xvfb-run -a /usr/bin/python3 doc/experiments/plot_twist.py [OUTPUT_DIR] [PREFIX ...]
 
 OUTPUT_DIR (default `output`) holds the run folders <PREFIX>_mu0, <PREFIX>_mu0_2,
 <PREFIX>_mu0_5, <PREFIX>_mu1_0 written by the prm files of prm/experiments/6_7_twist/
-(PREFIX default `twist`; `twist_reduced` for the reduced runs). Missing runs are skipped.
+(PREFIX default `twist`; `twist_reduced` and `twist_medium` for the coarser runs).
+Missing runs are skipped; a run still going is read up to its last snapshot.
 
 Twist angle of the cube's top: the particles of the topmost particle layer of the
 cube (rest z within 1e-6 of the largest rest z) whose rest distance from the z axis is
@@ -20,7 +21,10 @@ time per mu, as Figure 17), twist_slip.png (slip = shell angle - cube-top angle 
 shell angle), twist_snapshots.png (needs VTK offscreen rendering: run under
 xvfb-run -a; Debian packages python3-vtk9, python3-matplotlib, xvfb), and prints a
 table of the slip onset per mu (the shell angle at which the cube's top first
-turns at less than half the shell's angular velocity over 0.2 s).
+turns at less than half the shell's angular velocity over 0.2 s). The figures of
+PREFIX other than `twist` carry its suffix (twist_angle_reduced.png, ...). With
+several PREFIXes, twist_resolution.png also compares their slip curves (colour:
+mu, line style: PREFIX in the order given).
 """
 import math
 import os
@@ -183,27 +187,42 @@ def render(folders, out):
     plt.close(fig)
 
 
-def main():
-    root = sys.argv[1] if len(sys.argv) > 1 else "output"
-    prefix = sys.argv[2] if len(sys.argv) > 2 else "twist"
-    os.makedirs(IMAGES, exist_ok=True)
-    suffix = "" if prefix == "twist" else "_" + prefix.replace("twist_", "")
+def runs_of(root, prefix):
+    """(mu, folder) of every run <prefix>_mu* in root that wrote particles."""
     runs = []
     for tag, mu in MUS:
         folder = os.path.join(root, f"{prefix}_mu{tag}")
         if os.path.exists(os.path.join(folder, "particles.pvd")):
             runs.append((mu, folder))
-    if not runs:
-        sys.exit(f"no runs {prefix}_mu* in {root}")
+    return runs
 
+
+def suffix_of(prefix):
+    return "" if prefix == "twist" else "_" + prefix.replace("twist_", "")
+
+
+def finish_slip_axes(bx, legend_size):
+    """Labels of a slip vs shell angle panel, with the paper's onsets."""
+    for onset, mu in ((0.1, 0), (0.3, 0.2), (0.7, 0.5)):
+        bx.axvline(onset, color="grey", ls=":", lw=1)
+        bx.text(onset, 0.02, f" paper onset\n mu = {mu:g}", fontsize=7, color="grey",
+                transform=bx.get_xaxis_transform())
+    bx.set_xlabel("shell twist angle [pi rad]")
+    bx.set_ylabel("slip = shell angle - cube top angle [rad]")
+    bx.legend(fontsize=legend_size)
+    bx.grid(alpha=0.3)
+
+
+def plot_prefix(prefix, histories):
+    """Figure 17 (angle vs time) and slip vs shell angle for one PREFIX."""
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.8))
     tt = np.linspace(0, T_END, 200)
     ax.plot(tt, shell_angle(tt), "k--", label="shell (prescribed)")
+    print(f"{prefix}:")
     print("| mu | particles in the top centre | cube top angle at the last snapshot [rad] |"
           " slip there [rad] | slip onset, shell angle [pi] |")
     print("|---|---|---|---|---|")
-    for mu, folder in runs:
-        t, a, n = twist_history(folder)
+    for mu, (t, a, n) in histories:
         ax.plot(t, a, label=f"mu = {mu:g}")
         bx.plot(shell_angle(t) / math.pi, shell_angle(t) - a, label=f"mu = {mu:g}")
         onset = slip_onset(t, a)
@@ -214,19 +233,45 @@ def main():
     ax.set_ylabel("twist angle of the cube's top centre [rad]")
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
-    for onset, mu in ((0.1, 0), (0.3, 0.2), (0.7, 0.5)):
-        bx.axvline(onset, color="grey", ls=":", lw=1)
-        bx.text(onset, 0.02, f" paper onset\n mu = {mu:g}", fontsize=7, color="grey",
-                transform=bx.get_xaxis_transform())
-    bx.set_xlabel("shell twist angle [pi rad]")
-    bx.set_ylabel("slip = shell angle - cube top angle [rad]")
-    bx.legend(fontsize=8)
-    bx.grid(alpha=0.3)
+    finish_slip_axes(bx, 8)
     fig.tight_layout()
-    fig.savefig(os.path.join(IMAGES, f"twist_angle{suffix}.png"), dpi=80)
+    fig.savefig(os.path.join(IMAGES, f"twist_angle{suffix_of(prefix)}.png"), dpi=80)
     plt.close(fig)
-    render([(f"mu = {mu:g}", folder) for mu, folder in runs],
-           os.path.join(IMAGES, f"twist_snapshots{suffix}.png"))
+
+
+def plot_resolutions(histories_per_prefix):
+    """Slip vs shell angle of every PREFIX in one panel: does the onset move
+    with the resolution?"""
+    styles = ["--", "-", "-.", ":"]
+    colours = {mu: f"C{i}" for i, (_, mu) in enumerate(MUS)}
+    fig, bx = plt.subplots(figsize=(6.5, 4))
+    for k, (prefix, histories) in enumerate(histories_per_prefix):
+        for mu, (t, a, _) in histories:
+            bx.plot(shell_angle(t) / math.pi, shell_angle(t) - a,
+                    styles[k % len(styles)], color=colours[mu],
+                    label=f"{prefix}, mu = {mu:g}")
+    finish_slip_axes(bx, 7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(IMAGES, "twist_resolution.png"), dpi=80)
+    plt.close(fig)
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else "output"
+    prefixes = sys.argv[2:] if len(sys.argv) > 2 else ["twist"]
+    os.makedirs(IMAGES, exist_ok=True)
+    histories_per_prefix = []
+    for prefix in prefixes:
+        runs = runs_of(root, prefix)
+        if not runs:
+            sys.exit(f"no runs {prefix}_mu* in {root}")
+        histories = [(mu, twist_history(folder)) for mu, folder in runs]
+        histories_per_prefix.append((prefix, histories))
+        plot_prefix(prefix, histories)
+        render([(f"mu = {mu:g}", folder) for mu, folder in runs],
+               os.path.join(IMAGES, f"twist_snapshots{suffix_of(prefix)}.png"))
+    if len(prefixes) > 1:
+        plot_resolutions(histories_per_prefix)
 
 
 if __name__ == "__main__":
