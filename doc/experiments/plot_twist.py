@@ -24,7 +24,8 @@ table of the slip onset per mu (the shell angle at which the cube's top first
 turns at less than half the shell's angular velocity over 0.2 s). The figures of
 PREFIX other than `twist` carry its suffix (twist_angle_reduced.png, ...). With
 several PREFIXes, twist_resolution.png also compares their slip curves (colour:
-mu, line style: PREFIX in the order given).
+mu, line style: PREFIX in the order given); `--compare` draws only that figure and
+the tables, leaving each PREFIX's own figures as they are.
 """
 import math
 import os
@@ -213,8 +214,9 @@ def finish_slip_axes(bx, legend_size):
     bx.grid(alpha=0.3)
 
 
-def plot_prefix(prefix, histories):
-    """Figure 17 (angle vs time) and slip vs shell angle for one PREFIX."""
+def plot_prefix(prefix, histories, table_only=False):
+    """Figure 17 (angle vs time) and slip vs shell angle for one PREFIX; with
+    table_only just the printed table."""
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.8))
     tt = np.linspace(0, T_END, 200)
     ax.plot(tt, shell_angle(tt), "k--", label="shell (prescribed)")
@@ -229,6 +231,9 @@ def plot_prefix(prefix, histories):
         print(f"| {mu:g} | {n} | {a[-1]:.3f} (t = {t[-1]:.2f}) | "
               f"{shell_angle(t[-1]) - a[-1]:.3f} | "
               f"{'none' if onset is None else f'{onset / math.pi:.2f}'} |")
+    if table_only:
+        plt.close(fig)
+        return
     ax.set_xlabel("time [s]")
     ax.set_ylabel("twist angle of the cube's top centre [rad]")
     ax.legend(fontsize=8)
@@ -257,8 +262,11 @@ def plot_resolutions(histories_per_prefix):
 
 
 def main():
-    root = sys.argv[1] if len(sys.argv) > 1 else "output"
-    prefixes = sys.argv[2:] if len(sys.argv) > 2 else ["twist"]
+    arguments = sys.argv[1:]
+    compare_only = "--compare" in arguments
+    arguments = [a for a in arguments if a != "--compare"]
+    root = arguments[0] if arguments else "output"
+    prefixes = arguments[1:] or ["twist"]
     os.makedirs(IMAGES, exist_ok=True)
     histories_per_prefix = []
     for prefix in prefixes:
@@ -267,9 +275,10 @@ def main():
             sys.exit(f"no runs {prefix}_mu* in {root}")
         histories = [(mu, twist_history(folder)) for mu, folder in runs]
         histories_per_prefix.append((prefix, histories))
-        plot_prefix(prefix, histories)
-        render([(f"mu = {mu:g}", folder) for mu, folder in runs],
-               os.path.join(IMAGES, f"twist_snapshots{suffix_of(prefix)}.png"))
+        plot_prefix(prefix, histories, compare_only)
+        if not compare_only:
+            render([(f"mu = {mu:g}", folder) for mu, folder in runs],
+                   os.path.join(IMAGES, f"twist_snapshots{suffix_of(prefix)}.png"))
     if len(prefixes) > 1:
         plot_resolutions(histories_per_prefix)
 
