@@ -64,7 +64,7 @@ def twist_history(folder):
     """Times and mean twist angle of the top centre of the cube."""
     frames = series(folder, "particles")
     times, angles = [], []
-    top, previous, unwrapped = None, None, None
+    top, top_rest, previous, unwrapped = None, None, None, None
     for t, f in frames:
         g = read_grid(f)
         x = vtk_to_numpy(g.GetPoints().GetData()).astype(float)
@@ -74,7 +74,15 @@ def twist_history(folder):
             zmax = x0[:, 2].max()
             r0 = np.hypot(x0[:, 0], x0[:, 1])
             top = np.where((x0[:, 2] > zmax - 1e-6) & (r0 < TOP_RADIUS))[0]
-        # particles keep their order in the VTU (same handler, no MPI)
+            top_rest = x0[top]
+        # A point index must name the same particle in every snapshot (bfemp
+        # writes particles in id order since commit fb4876a); before, the order
+        # followed the cells, and the indices chosen above named other
+        # particles once the cube had deformed.
+        if not np.allclose(x0[top], top_rest, rtol=0., atol=1e-5):
+            sys.exit(f"{f}: the top-centre particles' rest positions differ from the "
+                     "first snapshot's: the VTU files do not list the particles in "
+                     "the same order (written by a bfemp older than fb4876a?)")
         a = np.arctan2(x[top, 1], x[top, 0]) - np.arctan2(x0[top, 1], x0[top, 0])
         a = (a + np.pi) % (2 * np.pi) - np.pi
         if previous is None:
