@@ -5,8 +5,8 @@
 // with one row per step and the rings in contact; mu = 0 buckles at a plate
 // travel in [4, 6] m (the paper draws it but gives no number; measured
 // 5.63 m, doc/experiments/buckling.md), mu = 0.2 at least 0.3 m later
-// (6.09 m), mu = 0.5 not within the 8 m. About 50 min of CPU, most of it
-// mu = 0.5's friction loop.
+// (6.09 m), mu = 0.5 not within the 8 m. 37 min of wall time on a shared
+// 2-core machine (2026-11-25), most of it mu = 0.5's friction loop.
 
 #include "../experiments/buckling_check.h"
 
