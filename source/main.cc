@@ -1,6 +1,7 @@
 // bfemp: read the dimension of the scene first, then run it as 2D or 3D.
 
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/stop_signals.h>
 #include <bfemp/scene/scene_parameters.h>
 #include <bfemp/scene/simulation.h>
 
@@ -14,21 +15,29 @@ namespace
 {
   using namespace bfemp;
 
-  /** Reads and builds the scene; runs it unless @p only_validate. */
+  /**
+   * Reads and builds the scene; runs it unless @p only_validate. Returns
+   * the exit code: 0, or 128 + the signal that stopped the run (what a
+   * shell reports for a process the signal ended, so that batch scripts
+   * see an unfinished run either way).
+   */
   template <int dim>
-  void
+  int
   run(const std::string &file, const bool only_validate)
   {
     SceneParameters<dim> parameters;
     parameters.read(file);
     Simulation<dim> simulation(parameters, file, std::cout);
     if (only_validate)
-      std::cout << "bfemp: " << file << " is valid: " << dim << "D, "
-                << parameters.bodies.size() << " bodies, "
-                << simulation.particles().n_particles() << " particles"
-                << std::endl;
-    else
-      simulation.run();
+      {
+        std::cout << "bfemp: " << file << " is valid: " << dim << "D, "
+                  << parameters.bodies.size() << " bodies, "
+                  << simulation.particles().n_particles() << " particles"
+                  << std::endl;
+        return 0;
+      }
+    const StopSignals stop_signals;
+    return simulation.run() ? 0 : 128 + StopSignals::received();
   }
 
 
@@ -87,10 +96,8 @@ main(int argc, char **argv)
       if ((validate && argc != 3) || (!validate && argc > 2) ||
           file.rfind("--", 0) == 0)
         return usage();
-      if (read_dimension(file) == 2)
-        run<2>(file, validate);
-      else
-        run<3>(file, validate);
+      return read_dimension(file) == 2 ? run<2>(file, validate)
+                                       : run<3>(file, validate);
     }
   catch (const bfemp::InputError &error)
     {

@@ -29,7 +29,9 @@ namespace bfemp
                       "0",
                       Patterns::Double(0.),
                       "[s] Wall-clock time between checkpoints, for runs "
-                      "longer than a job's time limit; 0: none.");
+                      "longer than a job's time limit; 0: none. Independent "
+                      "of it, SIGTERM, SIGINT or SIGUSR1 stop a run after "
+                      "the step in progress with a checkpoint.");
     prm.declare_entry("resume",
                       "false",
                       Patterns::Selection("false|true|auto"),

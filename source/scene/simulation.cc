@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/stop_signals.h>
 #include <bfemp/particles/body_sampler.h>
 #include <bfemp/particles/shape.h>
 #include <bfemp/scene/simulation.h>
@@ -561,7 +562,7 @@ namespace bfemp
 
 
   template <int dim>
-  void
+  bool
   Simulation<dim>::run()
   {
     const RunParameters        &run        = parameters.run;
@@ -575,7 +576,7 @@ namespace bfemp
                 << ", not before 'run/end time' = " << run.end_time
                 << "; nothing to do (a larger end time continues the run)"
                 << std::endl;
-        return;
+        return true;
       }
     prepare_output_folder(resumed.has_value());
     if (parameters.output.write_particles && particle_system.n_particles() > 0)
@@ -663,10 +664,17 @@ namespace bfemp
         ++step;
         saved_this_step = false;
 
+        // Read once, so that a signal arriving later in this step is
+        // handled consistently after the next one.
+        const int  stop_signal = StopSignals::received();
         const bool snapshot_due =
           time >= next_output - 1e-9 * dt || time >= run.end_time;
+        // A checkpoint needs a row (nothing pending in newton_since_row), so
+        // a stop adds one at its step; the rows' Newton counts still sum to
+        // the run's total.
         const bool row_due =
-          snapshot_due || step % parameters.output.diagnostics_interval == 0;
+          snapshot_due || step % parameters.output.diagnostics_interval == 0 ||
+          stop_signal != 0;
         if (row_due)
           {
             state = diagnostics();
@@ -735,6 +743,13 @@ namespace bfemp
             while (next_checkpoint <= time + 1e-9 * dt)
               next_checkpoint += std::max(checkpoint.interval, dt);
           }
+        if (stop_signal != 0 && time < run.end_time)
+          {
+            if (!saved_this_step)
+              write_checkpoint(next_output, progress.wall_time());
+            report_stop(stop_signal, time);
+            return false;
+          }
       }
     if (checkpoint.enabled() && !saved_this_step)
       write_checkpoint(next_output, progress.wall_time());
@@ -742,6 +757,20 @@ namespace bfemp
       console << "bfemp: finished " << step << " steps in " << std::fixed
               << std::setprecision(1) << progress.wall_time() << " s"
               << std::defaultfloat << std::setprecision(6) << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::report_stop(const int signal, const double time) const
+  {
+    console << "bfemp: stopped by " << StopSignals::name(signal)
+            << " after step " << step << " (t = " << time
+            << "); the checkpoint " << checkpoint_path()
+            << " continues the run with 'checkpoint/resume = auto' in "
+            << parameter_file << std::endl;
   }
 
 

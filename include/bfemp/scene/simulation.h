@@ -40,8 +40,13 @@ namespace bfemp
                const std::string          &parameter_file,
                std::ostream               &console);
 
-    /** Runs to the end time; throws SimulationError on failure. */
-    void
+    /**
+     * Runs to the end time and returns true; throws SimulationError on
+     * failure. Returns false if a StopSignals object recorded a signal: the
+     * run then stopped after the step in progress and left a checkpoint
+     * (also when the prm asks for none) that 'checkpoint/resume' continues.
+     */
+    bool
     run();
 
     const ParticleSystem<dim> &
@@ -137,6 +142,10 @@ namespace bfemp
     /** Saves the state after the current step. */
     void
     write_checkpoint(const double next_output, const double wall_time) const;
+
+    /** Tells where a run stopped by @p signal stands and how to go on. */
+    void
+    report_stop(const int signal, const double time) const;
 
     void
     write_snapshot(const double time);
