@@ -1,0 +1,93 @@
+#ifndef bfemp_cmpm_boundary_interior_map_h
+#define bfemp_cmpm_boundary_interior_map_h
+
+#include <bfemp/cmpm/coarse_boundary_map.h>
+#include <bfemp/cmpm/coarse_grid.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <vector>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * One quadrature point of the local equilibrium of a coarse element: a
+   * particle inside it (seed 002 Section 5.2 takes the particles as the
+   * quadrature of the knot spans).
+   */
+  template <int dim>
+  struct LocalQuadraturePoint
+  {
+    /** Position in element coordinates [m]. */
+    Point<dim> position;
+    /** Quadrature weight, the particle's rest volume V_p^0 [m^dim]. */
+    double weight = 0.;
+    /** F_p^n, the particle's deformation gradient at the step's start. */
+    Tensor<2, dim> deformation_gradient;
+    /** dP/dF at F_p^n (PSD-projected), the particle's own material. */
+    Tensor<4, dim> tangent;
+  };
+
+
+
+  /**
+   * The boundary-interior map M of seed 002 (eqs. 28-31) of one coarse
+   * element, multiplied with the coarse-boundary map Psi (eq. 20): the
+   * interior rows of the control matrix p = M Psi,
+   * @f[
+   *   p_i = -K_i^{-1} K_{ib} \Psi_b ,
+   * @f]
+   * one dim x dim block per (interior fine node, local coarse node). The
+   * boundary rows of p are Psi itself (the identity block of eq. 31).
+   *
+   * K is the tangent stiffness of the local equilibrium at the step's
+   * start (the first Newton step of eq. 28): with the fine patch functions
+   * B_k as shape functions and the particles as quadrature, in the same
+   * displacement form as bfemp's MPM elasticity term (BFEMP eq. 25),
+   * K_{ka,mc} = sum_p V_p^0 (dP/dF)_{abce} (F_p^T grad B_k)_b
+   * (F_p^T grad B_m)_e. Knot spans without particles would leave K_i
+   * singular (seed 002 Remark 4). Instead of the seed's diagonal shift, a
+   * fictitious material of shear modulus eps * c (c the element's mean
+   * particle stiffness, eps = `cmpm/empty span stiffness`) fills every knot
+   * span, integrated exactly by 2 Gauss points per direction: its stiffness
+   * annihilates translations and affine fields like the particles' does,
+   * so the map keeps the partition of unity (eq. 34) and the affine
+   * reproduction exact, which a diagonal shift would not (doc/cmpm.md).
+   * An element without particles is the fictitious material alone.
+   */
+  template <int dim>
+  class BoundaryInteriorMap
+  {
+  public:
+    BoundaryInteriorMap(const CoarseGrid<dim>        &grid,
+                        const CoarseBoundaryMap<dim> &psi);
+
+    /**
+     * p_i of the element whose particles are @p points, stored as
+     * control[i * r + I] for interior fine node i and local coarse node I.
+     */
+    void
+    compute(const std::vector<LocalQuadraturePoint<dim>> &points,
+            std::vector<Tensor<2, dim>>                  &control) const;
+
+  private:
+    /** Adds one quadrature point's w (dP/dF)-weighted products to K_i and
+     *  R = K_ib Psi_b. */
+    void
+    add_point(const LocalQuadraturePoint<dim> &point,
+              FullMatrix<double>              &K_i,
+              FullMatrix<double>              &R) const;
+
+    const CoarseGrid<dim>        &grid;
+    const CoarseBoundaryMap<dim> &psi;
+    /** K_i and K_ib Psi_b of the fictitious material (mu = 1, lambda = 0). */
+    FullMatrix<double> fictitious_K_i;
+    FullMatrix<double> fictitious_R;
+  };
+} // namespace bfemp
+
+#endif

@@ -1,0 +1,71 @@
+#ifndef bfemp_cmpm_cmpm_parameters_h
+#define bfemp_cmpm_cmpm_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * prm subsection "cmpm": the coarsened C1 matrix-valued B-spline-patch
+   * shape functions of seed 002 (Sections 3-7). The coarse element span H is
+   * the grid's `cell size`. The boundary-interior map takes the seed's
+   * default local solve, one Newton step of the local equilibrium (eqs.
+   * 28-31).
+   */
+  struct CmpmParameters
+  {
+    /**
+     * How the coarse nodes set the boundary fine nodes (the coarse-boundary
+     * map Psi, seed 002 Section 5.1).
+     */
+    enum class ElementType
+    {
+      /** Quadratic B-spline volume on all coarse nodes (Section 5.1.1). */
+      bspline,
+      /**
+       * One quadratic B-spline curve (2D) or surface (3D) per element face,
+       * extruded (Section 5.1.2, eqs. 25-26 and 36-37).
+       */
+      boundary_bspline,
+      /**
+       * Element-local multilinear interpolation of the element's 2^dim
+       * corner nodes: the C0 coarse element the seed compares against (not
+       * part of cMPM; for comparisons and the C1 test).
+       */
+      multilinear
+    };
+
+    /** `cmpm/enabled`: the MPM bodies use cMPM instead of the grid kernel. */
+    bool enabled = false;
+    /** `cmpm/coarse element type`. */
+    ElementType element_type = ElementType::boundary_bspline;
+    /** `cmpm/coarse node span`: nodes per coarse element edge, 1 (L = H) or
+     *  2 (L = H/2, the seed's default). */
+    unsigned int nodes_per_span = 2;
+    /** `cmpm/fine nodes per direction`: n >= 5, the seed's default 7. */
+    unsigned int n_fine = 7;
+    /**
+     * `cmpm/empty span stiffness`: the stiffness, relative to the element's
+     * mean particle stiffness, of a fictitious material added to every knot
+     * span so that K_i stays invertible where spans hold no particle (the
+     * role of the seed's diagonal shift, Remark 4; see doc/cmpm.md).
+     */
+    double empty_span_stiffness = 1e-6;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** "B-spline", "boundary B-spline" or "multilinear". */
+    static std::string
+    to_string(const ElementType type);
+  };
+} // namespace bfemp
+
+#endif

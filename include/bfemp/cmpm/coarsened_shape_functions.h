@@ -1,0 +1,105 @@
+#ifndef bfemp_cmpm_coarsened_shape_functions_h
+#define bfemp_cmpm_coarsened_shape_functions_h
+
+#include <bfemp/cmpm/boundary_interior_map.h>
+#include <bfemp/cmpm/coarse_boundary_map.h>
+#include <bfemp/cmpm/coarse_grid.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace bfemp
+{
+  using namespace dealii;
+
+  /**
+   * The matrix-valued coarsened shape function of one coarse node at a point:
+   * Phi_I (eq. 11 / 35) and its gradient, gradient[a][c][b] =
+   * d(Phi_I)_ac / dx_b (eq. 16), so that u(x) = sum_I Phi_I Q_I and
+   * grad u(x) = sum_I gradient contracted with Q_I over c.
+   */
+  template <int dim>
+  struct CoarseShapeValue
+  {
+    /** Flat index of the coarse node in CoarseGrid::node_lattice(). */
+    std::size_t    node = 0;
+    Tensor<2, dim> value;
+    Tensor<3, dim> gradient;
+  };
+
+
+
+  /**
+   * The coarsened C1 shape functions of cMPM (seed 002): on coarse element
+   * alpha, Phi^alpha(x) = B^alpha(x) p^alpha with p^alpha = M^alpha Psi
+   * (eqs. 15, 20). Psi is built once; the interior rows of p^alpha are
+   * rebuilt by reinit() from the particles in the element (Section 7.2:
+   * every step, as the material distribution moves). Each element's data
+   * belongs to that element alone, so elements are rebuilt independently
+   * (in parallel here, on their owning rank later).
+   */
+  template <int dim>
+  class CoarsenedShapeFunctions
+  {
+  public:
+    explicit CoarsenedShapeFunctions(const CoarseGrid<dim> &grid);
+
+    /**
+     * Rebuilds the control matrices of the elements @p elements (flat
+     * indices) from their particles, @p points[e] holding those of
+     * elements[e] in element coordinates; every other element becomes
+     * inactive. The elements are independent and run on threads.
+     */
+    void
+    reinit(const std::vector<std::size_t>                            &elements,
+           const std::vector<std::vector<LocalQuadraturePoint<dim>>> &points);
+
+    /** Whether reinit() built element @p element. */
+    bool
+    is_active(const std::size_t element) const;
+
+    /**
+     * Phi_I and grad Phi_I (eqs. 15-16) at x (global coordinates) of the r
+     * coarse nodes of @p element, which must be active. x may lie on the
+     * element's faces, so both sides of a face can be evaluated.
+     */
+    void
+    evaluate(const std::array<int, dim>         &element,
+             const Point<dim>                   &x,
+             std::vector<CoarseShapeValue<dim>> &values) const;
+
+    /** The same in the element that contains x. */
+    void
+    evaluate(const Point<dim>                   &x,
+             std::vector<CoarseShapeValue<dim>> &values) const;
+
+    /**
+     * The averaged scalar shape function of Phi_I for mass P2G (seed 002
+     * Fig. 17): tr(Phi_I) / dim. These sum to one over the coarse nodes
+     * because the Phi_I sum to the identity (eq. 34).
+     */
+    static double
+    averaged_scalar(const Tensor<2, dim> &value);
+
+    const CoarseGrid<dim> &
+    grid() const;
+
+    const CoarseBoundaryMap<dim> &
+    coarse_boundary_map() const;
+
+    /** p_i of an active element, control[i * r + I] (BoundaryInteriorMap). */
+    const std::vector<Tensor<2, dim>> &
+    interior_control(const std::size_t element) const;
+
+  private:
+    const CoarseGrid<dim>                   &coarse_grid;
+    CoarseBoundaryMap<dim>                   psi;
+    BoundaryInteriorMap<dim>                 condensation;
+    std::vector<std::vector<Tensor<2, dim>>> control;
+  };
+} // namespace bfemp
+
+#endif

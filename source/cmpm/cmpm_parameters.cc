@@ -1,0 +1,99 @@
+#include <bfemp/base/input_error.h>
+#include <bfemp/cmpm/cmpm_parameters.h>
+
+namespace bfemp
+{
+  void
+  CmpmParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("cmpm");
+    prm.declare_entry("enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "[-] Discretize the MPM bodies with the coarsened C1 "
+                      "shape functions of cMPM (seed 002) on coarse elements "
+                      "of span H = grid/cell size.");
+    prm.declare_entry(
+      "coarse element type",
+      "boundary B-spline",
+      Patterns::Selection("B-spline|boundary B-spline|multilinear"),
+      "[-] Coarse-boundary map (seed 002 Section 5.1): a quadratic B-spline "
+      "on all coarse nodes around the element (B-spline), one B-spline "
+      "curve/surface per element face extruded inward (boundary B-spline, "
+      "eqs. 25-26 / 36-37), or the C0 element-local multilinear "
+      "interpolation of the corner nodes (multilinear, for comparison).");
+    prm.declare_entry("coarse node span",
+                      "H/2",
+                      Patterns::Selection("H|H/2"),
+                      "[-] Spacing L of the coarse nodes: the element span H "
+                      "or H/2 (nodes also at edge and face centres).");
+    prm.declare_entry("fine nodes per direction",
+                      "7",
+                      Patterns::Integer(),
+                      "[-] n quadratic B-spline functions per direction in "
+                      "each coarse element (n >= 5); the fine knot span is "
+                      "s = H / (n - 2).");
+    prm.declare_entry("empty span stiffness",
+                      "1e-6",
+                      Patterns::Double(),
+                      "[-] Stiffness of a fictitious material in every fine "
+                      "knot span, relative to the element's mean particle "
+                      "stiffness: keeps the local condensation solvable where "
+                      "spans hold no particle (seed 002 Remark 4) without "
+                      "breaking the partition of unity. In [0, 1e-2].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  CmpmParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("cmpm");
+    enabled                = prm.get_bool("enabled");
+    const std::string type = prm.get("coarse element type");
+    element_type           = type == "B-spline"      ? ElementType::bspline
+                             : type == "multilinear" ? ElementType::multilinear
+                                                     : ElementType::boundary_bspline;
+    nodes_per_span         = prm.get("coarse node span") == "H" ? 1 : 2;
+    const long n           = prm.get_integer("fine nodes per direction");
+    empty_span_stiffness   = prm.get_double("empty span stiffness");
+    prm.leave_subsection();
+
+    require_input(n >= 5 && n <= 32,
+                  "cmpm",
+                  "fine nodes per direction",
+                  std::to_string(n),
+                  "must be in [5, 32]: n - 4 >= 1 interior fine nodes per "
+                  "direction are needed for the local condensation");
+    n_fine = static_cast<unsigned int>(n);
+    require_input(empty_span_stiffness >= 0. && empty_span_stiffness <= 1e-2,
+                  "cmpm",
+                  "empty span stiffness",
+                  to_input_string(empty_span_stiffness),
+                  "must be in [0, 1e-2]");
+    require_input(!(element_type == ElementType::multilinear &&
+                    nodes_per_span != 1),
+                  "cmpm",
+                  "coarse node span",
+                  "H/2",
+                  "the multilinear coarse element has its nodes at the "
+                  "element corners only: use H");
+  }
+
+
+
+  std::string
+  CmpmParameters::to_string(const ElementType type)
+  {
+    switch (type)
+      {
+        case ElementType::bspline:
+          return "B-spline";
+        case ElementType::boundary_bspline:
+          return "boundary B-spline";
+        default:
+          return "multilinear";
+      }
+  }
+} // namespace bfemp

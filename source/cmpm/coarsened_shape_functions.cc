@@ -1,0 +1,148 @@
+#include <bfemp/cmpm/coarsened_shape_functions.h>
+
+#include <deal.II/base/parallel.h>
+
+namespace bfemp
+{
+  template <int dim>
+  CoarsenedShapeFunctions<dim>::CoarsenedShapeFunctions(
+    const CoarseGrid<dim> &grid)
+    : coarse_grid(grid)
+    , psi(grid)
+    , condensation(grid, psi)
+    , control(grid.n_elements_total())
+  {}
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::reinit(
+    const std::vector<std::size_t>                            &elements,
+    const std::vector<std::vector<LocalQuadraturePoint<dim>>> &points)
+  {
+    AssertDimension(elements.size(), points.size());
+    for (auto &element_control : control)
+      element_control.clear();
+    // one element per task: the per-element work is a dense solve of
+    // dim (n - 4)^dim unknowns, large against the scheduling cost
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      elements.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t e = begin; e < end; ++e)
+          condensation.compute(points[e], control[elements[e]]);
+      },
+      1);
+  }
+
+
+
+  template <int dim>
+  bool
+  CoarsenedShapeFunctions<dim>::is_active(const std::size_t element) const
+  {
+    return !control[element].empty();
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::evaluate(
+    const std::array<int, dim>         &element,
+    const Point<dim>                   &x,
+    std::vector<CoarseShapeValue<dim>> &values) const
+  {
+    const std::size_t index = coarse_grid.element_index(element);
+    Assert(is_active(index), ExcMessage("cMPM element without particles"));
+    const unsigned int r = coarse_grid.n_local_nodes();
+    values.assign(r, CoarseShapeValue<dim>());
+    for (unsigned int I = 0; I < r; ++I)
+      values[I].node = coarse_grid.global_node(element, I);
+
+    typename CoarseGrid<dim>::FineStencil stencil;
+    coarse_grid.fine_stencil(Point<dim>(x -
+                                        coarse_grid.element_origin(element)),
+                             stencil);
+    const std::vector<Tensor<2, dim>> &p = control[index];
+
+    // eq. 15: Phi_I = sum_k B_k p_kI; p_kI = psi_kI identity on the boundary
+    // rows (eq. 31), the condensed blocks on the interior rows
+    for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+      {
+        const double          B      = stencil.value[q];
+        const Tensor<1, dim> &grad_B = stencil.gradient[q];
+        const int             i = coarse_grid.interior_index(stencil.node[q]);
+        if (i < 0)
+          for (const auto &[I, weight] : psi.row(stencil.node[q]))
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                values[I].value[a][a] += B * weight;
+                values[I].gradient[a][a] += weight * grad_B;
+              }
+        else
+          for (unsigned int I = 0; I < r; ++I)
+            {
+              const Tensor<2, dim> &p_kI = p[i * r + I];
+              values[I].value += B * p_kI;
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int c = 0; c < dim; ++c)
+                  values[I].gradient[a][c] += p_kI[a][c] * grad_B;
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::evaluate(
+    const Point<dim>                   &x,
+    std::vector<CoarseShapeValue<dim>> &values) const
+  {
+    evaluate(coarse_grid.element_of(x), x, values);
+  }
+
+
+
+  template <int dim>
+  double
+  CoarsenedShapeFunctions<dim>::averaged_scalar(const Tensor<2, dim> &value)
+  {
+    return trace(value) / dim;
+  }
+
+
+
+  template <int dim>
+  const CoarseGrid<dim> &
+  CoarsenedShapeFunctions<dim>::grid() const
+  {
+    return coarse_grid;
+  }
+
+
+
+  template <int dim>
+  const CoarseBoundaryMap<dim> &
+  CoarsenedShapeFunctions<dim>::coarse_boundary_map() const
+  {
+    return psi;
+  }
+
+
+
+  template <int dim>
+  const std::vector<Tensor<2, dim>> &
+  CoarsenedShapeFunctions<dim>::interior_control(
+    const std::size_t element) const
+  {
+    return control[element];
+  }
+
+
+
+  template class CoarsenedShapeFunctions<2>;
+  template class CoarsenedShapeFunctions<3>;
+} // namespace bfemp
