@@ -51,13 +51,14 @@ namespace
   /** One element with a stiff ball of a third of its size at its centre. */
   template <int dim>
   std::vector<LocalQuadraturePoint<dim>>
-  heterogeneous_particles(const CoarseGrid<dim> &grid,
-                          const unsigned int     ppc)
+  heterogeneous_particles(const CoarseGrid<dim> &grid, const unsigned int ppc)
   {
-    const auto soft = create_material<dim>(
-      "neo-Hookean", ElasticModuli::from_young_poisson(1e5, 0.3));
-    const auto stiff = create_material<dim>(
-      "neo-Hookean", ElasticModuli::from_young_poisson(1e8, 0.3));
+    const auto soft =
+      create_material<dim>("neo-Hookean",
+                           ElasticModuli::from_young_poisson(1e5, 0.3));
+    const auto stiff =
+      create_material<dim>("neo-Hookean",
+                           ElasticModuli::from_young_poisson(1e8, 0.3));
     const double       H      = grid.element_size();
     const unsigned int per_1d = (grid.n_fine_1d() - 2) * ppc;
     const double       h      = H / per_1d;
@@ -76,8 +77,8 @@ namespace
             points[flat].position[d] = (rest % per_1d + 0.5) * h;
             rest /= per_1d;
           }
-        const Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-        points[flat].weight    = std::pow(h, dim);
+        const Tensor<2, dim> F            = unit_symmetric_tensor<dim>();
+        points[flat].weight               = std::pow(h, dim);
         points[flat].deformation_gradient = F;
         points[flat].tangent =
           ((points[flat].position - centre).norm() < H / 3. ? stiff : soft)
@@ -102,7 +103,7 @@ namespace
         psi_seconds = std::min(psi_seconds, seconds_since(start));
       }
 
-    const auto points = heterogeneous_particles(grid, 2);
+    const auto                   points = heterogeneous_particles(grid, 2);
     CoarsenedShapeFunctions<dim> phi(grid);
     double element_seconds = 1e300, evaluate_seconds = 1e300;
     for (unsigned int k = 0; k < repeats; ++k)
@@ -150,7 +151,7 @@ namespace
     prm.element_type   = CmpmParameters::ElementType::boundary_bspline;
     prm.nodes_per_span = 1;
     prm.n_fine         = 7;
-    const CoarseGrid<2> grid(Point<2>(), 1., {{1, 1}}, prm);
+    const CoarseGrid<2>        grid(Point<2>(), 1., {{1, 1}}, prm);
     CoarsenedShapeFunctions<2> phi(grid);
     phi.reinit({0}, {heterogeneous_particles(grid, 4)});
 
@@ -216,12 +217,12 @@ main(int argc, char **argv)
       std::cout << "bfemp cmpm_shape_functions (" << cpu_model() << ", "
                 << build_type() << " build, one element, one thread)"
                 << std::endl;
-      const GitState git     = read_git_state();
-      const unsigned repeats = quick ? 1 : 3;
-      std::vector<Result> results;
+      const GitState                  git     = read_git_state();
+      const unsigned                  repeats = quick ? 1 : 3;
+      std::vector<Result>             results;
       const std::vector<unsigned int> ns =
-        quick ? std::vector<unsigned int>{7} :
-                std::vector<unsigned int>{5, 7, 9};
+        quick ? std::vector<unsigned int>{7}
+              : std::vector<unsigned int>{5, 7, 9};
       for (const int dim : {2, 3})
         for (const auto type : {CmpmParameters::ElementType::bspline,
                                 CmpmParameters::ElementType::boundary_bspline})
@@ -232,13 +233,15 @@ main(int argc, char **argv)
                 prm.element_type   = type;
                 prm.nodes_per_span = l;
                 prm.n_fine         = n;
-                results.push_back(dim == 2 ? run<2>(prm, repeats) :
-                                             run<3>(prm, repeats));
+                results.push_back(dim == 2 ? run<2>(prm, repeats)
+                                           : run<3>(prm, repeats));
               }
 
       char              date[64];
       const std::time_t now = std::time(nullptr);
-      std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ",
+      std::strftime(date,
+                    sizeof(date),
+                    "%Y-%m-%dT%H:%M:%SZ",
                     std::gmtime(&now));
       const auto parent = std::filesystem::path(output).parent_path();
       if (!parent.empty())
@@ -266,9 +269,10 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < results.size(); ++i)
         {
           const Result &r = results[i];
-          out << "    {\"dim\": " << r.dim << ", \"type\": "
-              << json_string(r.type) << ", \"nodes_per_span\": "
-              << r.nodes_per_span << ", \"n\": " << r.n << ", \"r\": " << r.r
+          out << "    {\"dim\": " << r.dim
+              << ", \"type\": " << json_string(r.type)
+              << ", \"nodes_per_span\": " << r.nodes_per_span
+              << ", \"n\": " << r.n << ", \"r\": " << r.r
               << ", \"interior_fine_nodes\": " << r.interior
               << ", \"particles\": " << r.particles
               << ", \"psi_seconds\": " << json_number(r.psi_seconds)

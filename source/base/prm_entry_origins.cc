@@ -107,6 +107,28 @@ namespace bfemp
 
 
 
+  bool
+  PrmEntryOrigins::sets_any_entry() const
+  {
+    return !directory_by_entry.empty();
+  }
+
+
+
+  bool
+  PrmEntryOrigins::sets_entry(const std::string &entry,
+                              const std::string &subsection_prefix) const
+  {
+    for (const auto &[key, directory] : directory_by_entry)
+      if (key == entry ||
+          (key.find('\n') != std::string::npos &&
+           key.compare(0, subsection_prefix.size(), subsection_prefix) == 0))
+        return true;
+    return false;
+  }
+
+
+
   std::string
   PrmEntryOrigins::key(const std::vector<std::string> &subsections,
                        const std::string              &entry)

@@ -44,6 +44,7 @@ namespace bfemp
                               const CmpmParameters                &parameters)
     : origin(origin)
     , H(element_size)
+    , inverse_H(1. / element_size)
     , n_elements_per_direction(n_elements)
     , prm(parameters)
     , l(parameters.nodes_per_span)
@@ -166,7 +167,9 @@ namespace bfemp
     std::array<int, dim> element;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const double xi        = (x[d] - origin[d]) / H;
+        // the arithmetic of Lattice::cell_of, so that a particle's coarse
+        // element is its ParticleSystem cell to the last bit
+        const double xi        = (x[d] - origin[d]) * inverse_H;
         const int    truncated = static_cast<int>(xi);
         element[d]             = truncated - (xi < truncated);
       }

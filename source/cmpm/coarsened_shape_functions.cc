@@ -22,8 +22,7 @@ namespace bfemp
     const std::vector<std::vector<LocalQuadraturePoint<dim>>> &points)
   {
     AssertDimension(elements.size(), points.size());
-    for (auto &element_control : control)
-      element_control.clear();
+    clear();
     // one element per task: the per-element work is a dense solve of
     // dim (n - 4)^dim unknowns, large against the scheduling cost
     parallel::apply_to_subranges(
@@ -34,6 +33,27 @@ namespace bfemp
           condensation.compute(points[e], control[elements[e]]);
       },
       1);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::clear()
+  {
+    for (auto &element_control : control)
+      element_control.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::rebuild(
+    const std::size_t                             element,
+    const std::vector<LocalQuadraturePoint<dim>> &points)
+  {
+    condensation.compute(points, control[element]);
   }
 
 
@@ -55,7 +75,10 @@ namespace bfemp
     std::vector<CoarseShapeValue<dim>> &values) const
   {
     const std::size_t index = coarse_grid.element_index(element);
-    Assert(is_active(index), ExcMessage("cMPM element without particles"));
+    AssertThrow(is_active(index),
+                ExcMessage("cMPM: a coarse element without shape functions "
+                           "was evaluated (it held no particle when they "
+                           "were built)"));
     const unsigned int r = coarse_grid.n_local_nodes();
     values.assign(r, CoarseShapeValue<dim>());
     for (unsigned int I = 0; I < r; ++I)

@@ -17,27 +17,35 @@ namespace bfemp
     const TimeParameters::ImplicitScheme              &scheme,
     const SolverParameters                            &solver,
     const ContactParameters                           &contact,
-    SubsteppedMPM<dim>                                *substepped_mpm)
+    SubsteppedMPM<dim>                                *substepped_mpm,
+    CmpmDiscretization<dim>                           *cmpm)
     : grid(grid)
     , particles(particles)
     , transfer(transfer)
+    , materials(materials)
     , fem_bodies(fem_bodies)
     , boundaries(boundaries)
     , gravity(gravity)
     , scheme(scheme)
     , with_mpm(particles.n_particles() > 0)
     , substepped_mpm(substepped_mpm)
+    , cmpm(cmpm)
     , contact_parameters(contact)
     , with_contact(with_mpm && !fem_bodies.empty())
     , with_friction(with_contact && contact.has_friction())
     , fem_elasticity(fem_bodies, dofs)
-    , mpm_elasticity(grid, particles, materials, dofs)
+    , mpm_elasticity(grid, particles, materials, dofs, cmpm)
     , mpm_correction_elasticity(mpm_elasticity)
     , potential(dofs)
     , newton(solver)
   {
     // A scene switches on only the terms it has.
-    std::vector<const EnergyTerm<dim> *> terms = {&inertia};
+    if (cmpm)
+      cmpm_inertia =
+        std::make_unique<CmpmInertiaTerm<dim>>(particles, *cmpm, dofs);
+    std::vector<const EnergyTerm<dim> *> terms = {
+      cmpm ? static_cast<const EnergyTerm<dim> *>(cmpm_inertia.get())
+           : &inertia};
     if (std::any_of(fem_bodies.begin(), fem_bodies.end(), [](const auto &b) {
           return !b->is_kinematic();
         }))
@@ -72,8 +80,18 @@ namespace bfemp
   void
   ImplicitIntegrator<dim>::particles_to_grid()
   {
-    state.reinit(grid.lattice().n_nodes);
-    transfer.particles_to_grid(particles, state, false);
+    if (cmpm)
+      {
+        // seed 002 Fig. 17: the shape functions of this step's particle
+        // distribution, then P2G through them
+        cmpm->reinit(particles, materials);
+        cmpm->particles_to_grid(particles, state);
+      }
+    else
+      {
+        state.reinit(grid.lattice().n_nodes);
+        transfer.particles_to_grid(particles, state, false);
+      }
     // A particle at the very edge of a node's kernel support gives it a
     // mass like 1e-40 kg. As an unknown such a node has a Hessian of that
     // size, its Newton increment is round-off, and ||p||_inf never falls
@@ -81,7 +99,10 @@ namespace bfemp
     // so it is left out of the step, as a node without mass.
     const double max_mass =
       *std::max_element(state.mass.begin(), state.mass.end());
-    const double negligible_mass = 1e-12 * max_mass;
+    // cMPM's marks are sums of m_p |Phi_Ip|, and its mass matrix holds
+    // |Phi_Ip|^2: a node below 1e-8 of the largest has a mass below round-off
+    // and makes the consistent mass numerically singular.
+    const double negligible_mass = (cmpm ? 1e-8 : 1e-12) * max_mass;
     for (std::size_t i = 0; i < state.mass.size(); ++i)
       if (state.mass[i] > negligible_mass)
         state.velocity[i] /= state.mass[i];
@@ -185,7 +206,7 @@ namespace bfemp
                 dt * c.obstacle_velocity,
                 c.obstacle_velocity);
           }
-    if (with_mpm)
+    if (with_mpm && !cmpm)
       for (const auto &c : boundaries.implicit_constraints(grid.lattice(),
                                                            state.mass,
                                                            state.velocity,
@@ -194,6 +215,25 @@ namespace bfemp
             c.free_projector,
             dt * c.obstacle_velocity,
             c.obstacle_velocity);
+    if (with_mpm && cmpm)
+      {
+        // Planar Dirichlet boundaries on the coarse nodes (seed 002 Section
+        // 8): walls and level sets hold the coarse nodes within them as
+        // they hold grid nodes; the walls stay where the grid's faces are.
+        const Lattice<dim>     &nodes = cmpm->node_lattice();
+        std::vector<Point<dim>> positions(nodes.n_nodes);
+        for (std::size_t i = 0; i < nodes.n_nodes; ++i)
+          positions[i] = nodes.node_position(i);
+        for (const auto &c : boundaries.implicit_constraints(grid.lattice(),
+                                                             positions,
+                                                             state.velocity,
+                                                             end_time))
+          if (dofs.grid_node(c.node) != DofSpace<dim>::invalid)
+            add(dofs.grid_node(c.node),
+                c.free_projector,
+                dt * c.obstacle_velocity,
+                c.obstacle_velocity);
+      }
   }
 
 
@@ -348,7 +388,10 @@ namespace bfemp
         state.displacement[i] = DofSpace<dim>::get(u, node);
         state.new_velocity[i] = DofSpace<dim>::get(velocity, node);
       }
-    transfer.grid_to_particles(particles, state, true);
+    if (cmpm)
+      cmpm->grid_to_particles(particles, state, transfer.parameters());
+    else
+      transfer.grid_to_particles(particles, state, true);
     particles.update_cells();
   }
 
@@ -454,6 +497,8 @@ namespace bfemp
     const Vector<double> acceleration = start_acceleration();
     const Vector<double> predicted    = predictor(acceleration, dt);
     inertia.reinit(node_mass, predicted);
+    if (cmpm_inertia)
+      cmpm_inertia->reinit(dt, scale, gravity);
     if (with_mpm && substepped_mpm)
       mpm_correction_elasticity.set_reference(predicted);
 

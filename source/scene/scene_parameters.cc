@@ -239,6 +239,7 @@ namespace bfemp
     GridParameters<dim>::declare_parameters(prm);
     TimeParameters::declare_parameters(prm);
     TransferParameters::declare_parameters(prm);
+    CmpmParameters::declare_parameters(prm);
     prm.enter_subsection("gravity");
     parameter_tools::declare_point<dim>(prm,
                                         "acceleration",
@@ -276,6 +277,7 @@ namespace bfemp
     grid.parse_parameters(prm);
     time.parse_parameters(prm);
     transfer.parse_parameters(prm);
+    cmpm.parse_parameters(prm);
     prm.enter_subsection("gravity");
     gravity = parameter_tools::get_vector<dim>(prm, "acceleration");
     prm.leave_subsection();
@@ -311,6 +313,8 @@ namespace bfemp
                   "a scene needs at least one MPM body or one FEM body "
                   "('number of FEM bodies')");
     contact.check_bodies(bodies.size(), fem_bodies.size());
+    if (cmpm.enabled)
+      check_cmpm();
     require_input(fem_bodies.empty() || time.is_implicit() ||
                     time.is_substepped(),
                   "time",
@@ -320,6 +324,47 @@ namespace bfemp
                   "'implicit backward Euler', 'implicit Newmark' or "
                   "'substepped explicit' (FEM bodies take the macro step "
                   "implicitly)");
+  }
+
+
+
+  template <int dim>
+  void
+  SceneParameters<dim>::check_cmpm() const
+  {
+    // What cMPM supports so far (doc/cmpm.md, "What is left"): the
+    // implicit integrators, PIC or FLIP, MPM bodies alone.
+    require_input(time.is_implicit() &&
+                    time.implicit_scheme().alpha *
+                        (1. - 2. * time.implicit_scheme().beta) ==
+                      0. &&
+                    time.implicit_scheme().gamma == 1.,
+                  "time",
+                  "integrator",
+                  time.is_implicit() ? "implicit Newmark"
+                                     : "an explicit or substepped integrator",
+                  "cMPM ('cmpm/enabled = true') runs with 'implicit backward "
+                  "Euler' (seed 002 eqs. 5-6) so far");
+    require_input(transfer.scheme == TransferParameters::Scheme::pic,
+                  "transfer",
+                  "scheme",
+                  transfer.scheme == TransferParameters::Scheme::apic ? "APIC"
+                                                                      : "FLIP",
+                  "cMPM transfers with PIC so far (its inertia is the "
+                  "consistent one over the particles)");
+    require_input(fem_bodies.empty(),
+                  "cmpm",
+                  "enabled",
+                  "true",
+                  "cMPM bodies do not take part in barrier contact with FEM "
+                  "bodies yet: use 'number of FEM bodies = 0' or the B-spline "
+                  "grid");
+    require_input(!output.write_grid,
+                  "output",
+                  "write grid",
+                  "true",
+                  "the grid output shows B-spline grid nodes; cMPM's unknowns "
+                  "are coarse nodes: set 'write grid = false'");
   }
 
 
@@ -360,6 +405,20 @@ namespace bfemp
     ParameterHandler prm;
     declare_parameters(prm, primitives, n_level_sets, n_fem_bodies);
     parse_prm_file(prm, file, false);
+    // An empty file would run the default body; a user who passed the
+    // wrong file should hear of it instead. A scene is what the file says
+    // of its bodies: at least one entry of 'body N' / 'fem body N' or a
+    // body count.
+    const PrmEntryOrigins origins(file);
+    if (!origins.sets_any_entry())
+      throw InputError(file + ": the file sets no entry; a scene needs at "
+                              "least its bodies ('body 0' or 'fem body 0', "
+                              "see prm/default.prm)");
+    if (!origins.sets_entry("number of bodies", "body ") &&
+        !origins.sets_entry("number of FEM bodies", "fem body "))
+      throw InputError(file + ": the file defines no body: set the entries "
+                              "of 'body 0' (its shape) or 'fem body 0', or "
+                              "'number of bodies' (see prm/default.prm)");
     try
       {
         parse_parameters(prm);

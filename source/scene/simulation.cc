@@ -62,20 +62,25 @@ namespace bfemp
                                                parameters.gravity,
                                                time.substepping);
       }
+    if (parameters.cmpm.enabled)
+      cmpm = std::make_unique<CmpmDiscretization<dim>>(grid, parameters.cmpm);
     if (time.is_implicit() || (time.is_substepped() && !fem_body_list.empty()))
       {
-        implicit_integrator = std::make_unique<ImplicitIntegrator<dim>>(
-          grid,
-          particle_system,
-          macro_transfer ? *macro_transfer : transfer,
-          materials,
-          fem_body_list,
-          parameters.boundaries,
-          parameters.gravity,
-          time.implicit_scheme(),
-          parameters.solver,
-          parameters.contact,
-          substepped_integrator.get());
+        implicit_integrator =
+          std::make_unique<ImplicitIntegrator<dim>>(grid,
+                                                    particle_system,
+                                                    macro_transfer
+                                                      ? *macro_transfer
+                                                      : transfer,
+                                                    materials,
+                                                    fem_body_list,
+                                                    parameters.boundaries,
+                                                    parameters.gravity,
+                                                    time.implicit_scheme(),
+                                                    parameters.solver,
+                                                    parameters.contact,
+                                                    substepped_integrator.get(),
+                                                    cmpm.get());
         // Bodies must start apart (eq. 15): a particle inside an FEM mesh, or
         // on its boundary where the barrier is infinite, has no valid state.
         const unsigned int touching =
@@ -248,6 +253,8 @@ namespace bfemp
     double                dt         = p.adaptive
                                          ? std::min(p.cfl_number * time_scale, p.maximum_time_step)
                                          : p.time_step;
+    if (end_reached(time, dt))
+      return 0.;
     if (!p.is_implicit() && !p.is_substepped() &&
         dt / time_scale > p.maximum_cfl_number)
       {
@@ -262,11 +269,25 @@ namespace bfemp
                 << " s or 'time step mode = CFL'";
         throw SimulationError(message.str());
       }
-    // Land exactly on the end time instead of overshooting it.
+    // Land on the end time instead of overshooting it. A remainder within
+    // round-off of dt (end times that are no binary multiple of dt) is a
+    // whole step: the step keeps dt exactly, so a run that stops there and
+    // is extended from its checkpoint repeats the uninterrupted run bit for
+    // bit, which a last step of end - t (off by an ulp) would not. The
+    // sliver of at most 1e-6 dt it leaves counts as the end (end_reached).
     const double remaining = parameters.run.end_time - time;
-    if (dt > remaining || remaining - dt < 1e-6 * dt)
-      dt = remaining;
-    return dt;
+    if (std::abs(remaining - dt) <= 1e-6 * dt)
+      return dt;
+    return std::min(dt, remaining);
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulation<dim>::end_reached(const double time, const double dt) const
+  {
+    return parameters.run.end_time - time <= 1e-6 * dt;
   }
 
 
@@ -569,7 +590,10 @@ namespace bfemp
     const CheckpointParameters &checkpoint = parameters.checkpoint;
     output_folder      = parameters.output.directory + "/" + run.name;
     const auto resumed = resume_from_checkpoint();
-    if (resumed && resumed->time >= run.end_time)
+    if (resumed &&
+        end_reached(resumed->time,
+                    parameters.time.adaptive ? parameters.time.maximum_time_step
+                                             : parameters.time.time_step))
       {
         console << "bfemp: the checkpoint " << checkpoint_path()
                 << " is at t = " << resumed->time
@@ -652,34 +676,35 @@ namespace bfemp
       resumed ? resumed->next_output : parameters.output.interval;
     // Checkpoints are taken at steps that write a diagnostics row, where
     // nothing is pending in newton_since_row.
-    double next_checkpoint      = time + checkpoint.interval;
-    double last_checkpoint_wall = progress.wall_time();
-    bool   saved_this_step      = resumed.has_value();
-    while (time < run.end_time)
+    double             next_checkpoint      = time + checkpoint.interval;
+    double             last_checkpoint_wall = progress.wall_time();
+    bool               saved_this_step      = resumed.has_value();
+    const unsigned int first_step           = step;
+    for (double dt = next_time_step(time, state.max_speed); dt > 0.;
+         dt        = next_time_step(time, state.max_speed))
       {
-        const double dt = next_time_step(time, state.max_speed);
-        advance(dt, time, state.max_speed);
-        time         = (dt == run.end_time - time) ? run.end_time : time + dt;
-        current_time = time;
-        ++step;
-        saved_this_step = false;
+               advance(dt, time, state.max_speed);
+               time         = (dt == run.end_time - time) ? run.end_time : time + dt;
+               current_time = time;
+               ++step;
+               saved_this_step = false;
 
-        // Read once, so that a signal arriving later in this step is
-        // handled consistently after the next one.
-        const int  stop_signal = StopSignals::received();
-        const bool snapshot_due =
-          time >= next_output - 1e-9 * dt || time >= run.end_time;
-        // A checkpoint needs a row (nothing pending in newton_since_row), so
-        // a stop adds one at its step; the rows' Newton counts still sum to
-        // the run's total.
-        const bool row_due =
-          snapshot_due || step % parameters.output.diagnostics_interval == 0 ||
-          stop_signal != 0;
-        if (row_due)
+               // Read once, so that a signal arriving later in this step is
+               // handled consistently after the next one.
+               const int  stop_signal  = StopSignals::received();
+               const bool at_end       = end_reached(time, dt);
+               const bool snapshot_due = time >= next_output - 1e-9 * dt || at_end;
+               // A checkpoint needs a row (nothing pending in newton_since_row), so
+               // a stop adds one at its step; the rows' Newton counts still sum to
+               // the run's total.
+               const bool row_due =
+                 snapshot_due || step % parameters.output.diagnostics_interval == 0 ||
+                 stop_signal != 0;
+               if (row_due)
           {
-            state = diagnostics();
-            check_state(state);
-            diagnostics_writer.write(
+                   state = diagnostics();
+                   check_state(state);
+                   diagnostics_writer.write(
               step,
               time,
               dt,
@@ -688,10 +713,10 @@ namespace bfemp
               newton_since_row,
               implicit_integrator ? implicit_integrator->n_dofs() : 0,
               implicit_integrator ? implicit_integrator->contact_statistics()
-                                  : ContactStatistics<dim>(),
+                                         : ContactStatistics<dim>(),
               last_substeps);
-            newton_since_row = NewtonStatistics();
-            write_body_diagnostics(body_writer);
+                   newton_since_row = NewtonStatistics();
+                   write_body_diagnostics(body_writer);
           }
         else
           // The next step's CFL check needs the current speed, not the one
@@ -701,62 +726,68 @@ namespace bfemp
                      StepDiagnostics<dim>::measure_max_speed(fem_body_list));
         if (snapshot_due)
           {
-            write_snapshot(time);
-            if (run.test_mode)
+                   write_snapshot(time);
+                   if (run.test_mode)
               print_test_summary(time, state);
             while (next_output <= time + 1e-9 * dt)
               next_output += std::max(parameters.output.interval, dt);
           }
-        if (implicit_integrator)
+               if (implicit_integrator)
           {
-            const auto &contact = implicit_integrator->contact_statistics();
-            progress.report(step,
+                   const auto &contact = implicit_integrator->contact_statistics();
+                   progress.report(step,
                             time,
                             dt,
                             implicit_integrator->statistics().iterations,
                             implicit_integrator->n_dofs(),
                             contact.active ? static_cast<int>(contact.pairs)
-                                           : -1,
+                                                  : -1,
                             last_substeps);
-            if (!contact.friction_converged)
+                   if (!contact.friction_converged)
               std::cerr << "bfemp: warning: step " << step
                         << ": friction not converged after "
                         << contact.friction_updates
                         << " updates ('contact/maximum friction "
-                           "iterations'); the step goes on with the last "
-                           "lagged friction."
+                                  "iterations'); the step goes on with the last "
+                                  "lagged friction."
                         << std::endl;
           }
-        else
+               else
           progress.report(step, time, dt, last_substeps);
 
         const bool checkpoint_due =
-          (checkpoint.interval > 0. && time >= next_checkpoint - 1e-9 * dt) ||
-          (checkpoint.wall_time_interval > 0. &&
+                 (checkpoint.interval > 0. && time >= next_checkpoint - 1e-9 * dt) ||
+                 (checkpoint.wall_time_interval > 0. &&
            progress.wall_time() - last_checkpoint_wall >=
              checkpoint.wall_time_interval);
-        if (row_due && checkpoint_due)
+               if (row_due && checkpoint_due)
           {
-            write_checkpoint(next_output, progress.wall_time());
-            saved_this_step      = true;
-            last_checkpoint_wall = progress.wall_time();
-            while (next_checkpoint <= time + 1e-9 * dt)
+                   write_checkpoint(next_output, progress.wall_time());
+                   saved_this_step      = true;
+                   last_checkpoint_wall = progress.wall_time();
+                   while (next_checkpoint <= time + 1e-9 * dt)
               next_checkpoint += std::max(checkpoint.interval, dt);
           }
-        if (stop_signal != 0 && time < run.end_time)
+               if (stop_signal != 0 && !at_end)
           {
-            if (!saved_this_step)
+                   if (!saved_this_step)
               write_checkpoint(next_output, progress.wall_time());
             report_stop(stop_signal, time);
-            return false;
+                   return false;
           }
       }
     if (checkpoint.enabled() && !saved_this_step)
       write_checkpoint(next_output, progress.wall_time());
     if (!run.test_mode)
-      console << "bfemp: finished " << step << " steps in " << std::fixed
-              << std::setprecision(1) << progress.wall_time() << " s"
-              << std::defaultfloat << std::setprecision(6) << std::endl;
+      {
+        console << "bfemp: finished " << step - first_step << " steps";
+        if (first_step > 0)
+          console << " (continued from step " << first_step << ", " << step
+                  << " in all)";
+        console << " in " << std::fixed << std::setprecision(1)
+                << progress.wall_time() << " s" << std::defaultfloat
+                << std::setprecision(6) << std::endl;
+      }
     return true;
   }
 

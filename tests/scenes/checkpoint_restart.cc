@@ -6,13 +6,14 @@
 // contact with friction under backward Euler (the accumulated friction
 // dissipation must continue, not restart at 0), the same with Newmark (its
 // a^n is rebuilt from the state), and explicit USL with the grid series.
-// Time steps and end times are binary fractions, so that the first part
-// ends exactly where the uninterrupted run passes, without a shortened
-// last step. A diagnostics.csv of an older bfemp (without a column that
-// this version writes) is continued with nan in the new column's earlier
-// rows; one with a column this version no longer writes is refused. Then the
-// refusals: no checkpoint, a checkpoint of another scene, a cut file,
-// nothing left to run, and a new run that clears an old checkpoint.
+// Time steps and end times are binary fractions in the first scenes; then a
+// decimal time step (2e-3), whose first part ends within round-off of its
+// end time and must still take the full step. A diagnostics.csv of an older
+// bfemp (without a column that this version writes) is continued with nan in
+// the new column's earlier rows; one with a column this version no longer
+// writes is refused. Then the refusals: no checkpoint, a checkpoint of another
+// scene, a cut file, nothing left to run, and a new run that clears an old
+// checkpoint.
 
 #include <bfemp/base/input_error.h>
 #include <bfemp/scene/scene_parameters.h>
@@ -250,6 +251,31 @@ main(int argc, char **argv)
                        "end\n",
                      0.125,
                      0.03125);
+  // A time step that is no binary fraction: after 9 steps of 2e-3 the time
+  // is 0.018000000000000002, so the first part's last step to 0.02 is
+  // within round-off of dt, and must take the full dt (not end - t) for the
+  // continuation to repeat the uninterrupted run.
+  check_continuation("decimal_time_step",
+                     "demo_contact.prm",
+                     output + "subsection time\n"
+                              "  set time step = 2e-3\n"
+                              "end\n"
+                              "subsection output\n"
+                              "  set interval = 0.01\n"
+                              "end\n",
+                     0.04,
+                     0.01);
+  {
+    const std::size_t line = last_console.find("bfemp: finished");
+    const std::string finished =
+      last_console.substr(line, last_console.find(')', line) + 1 - line);
+    deallog << finished << std::endl;
+    bfemp_tests::check(finished ==
+                         "bfemp: finished 10 steps (continued from step 10, "
+                         "20 in all)",
+                       "the continued run reports its own steps and the "
+                       "total");
+  }
   check_older_diagnostics(output + implicit_step +
                           "subsection time\n"
                           "  set integrator = implicit Newmark\n"

@@ -35,6 +35,18 @@ namespace bfemp
     directory_of(const std::vector<std::string> &subsections,
                  const std::string              &entry) const;
 
+    /** Whether the files set any entry at all. */
+    bool
+    sets_any_entry() const;
+
+    /**
+     * Whether the files set an entry at the top level named @p entry or in a
+     * subsection whose outermost name starts with @p subsection_prefix.
+     */
+    bool
+    sets_entry(const std::string &entry,
+               const std::string &subsection_prefix) const;
+
   private:
     void
     scan(const std::string &file, unsigned int depth);

@@ -160,6 +160,7 @@ namespace bfemp
   private:
     Point<dim>                        origin;
     double                            H;
+    double                            inverse_H;
     std::array<unsigned int, dim>     n_elements_per_direction;
     CmpmParameters                    prm;
     unsigned int                      l;

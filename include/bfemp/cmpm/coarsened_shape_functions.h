@@ -57,6 +57,18 @@ namespace bfemp
     reinit(const std::vector<std::size_t>                            &elements,
            const std::vector<std::vector<LocalQuadraturePoint<dim>>> &points);
 
+    /** Makes every element inactive (the start of a step's rebuild). */
+    void
+    clear();
+
+    /**
+     * Rebuilds one element from its particles. Elements are independent:
+     * different elements may be rebuilt on different threads.
+     */
+    void
+    rebuild(const std::size_t                             element,
+            const std::vector<LocalQuadraturePoint<dim>> &points);
+
     /** Whether reinit() built element @p element. */
     bool
     is_active(const std::size_t element) const;

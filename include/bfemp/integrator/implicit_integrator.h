@@ -2,6 +2,8 @@
 #define bfemp_integrator_implicit_integrator_h
 
 #include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/cmpm/cmpm_discretization.h>
+#include <bfemp/cmpm/cmpm_inertia_term.h>
 #include <bfemp/contact/barrier_term.h>
 #include <bfemp/contact/contact_geometry.h>
 #include <bfemp/contact/contact_parameters.h>
@@ -59,6 +61,11 @@ namespace bfemp
    * and their velocity changes by (u - u^) / (c dt), c =
    * SubsteppedMPM::constant_force_ratio(S). The macro step is backward
    * Euler (doc/substepping.md).
+   *
+   * With @p cmpm the MPM bodies are discretized by cMPM (seed 002): the
+   * unknowns are coarse nodes, P2G and G2P go through the matrix-valued
+   * shape functions, which are rebuilt from the particles at the start of
+   * every step (doc/cmpm.md); the rest of the step is the same.
    */
   template <int dim>
   class ImplicitIntegrator
@@ -75,7 +82,8 @@ namespace bfemp
       const TimeParameters::ImplicitScheme              &scheme,
       const SolverParameters                            &solver,
       const ContactParameters                           &contact,
-      SubsteppedMPM<dim> *substepped_mpm = nullptr);
+      SubsteppedMPM<dim>      *substepped_mpm = nullptr,
+      CmpmDiscretization<dim> *cmpm           = nullptr);
 
     /**
      * Advances from @p time to time + dt; throws SimulationError. With
@@ -192,23 +200,27 @@ namespace bfemp
     void
     measure_contact(const Vector<double> &u);
 
-    const BackgroundGrid<dim>                  &grid;
-    ParticleSystem<dim>                        &particles;
-    const ParticleGridTransfer<dim>            &transfer;
-    std::vector<std::unique_ptr<FemBody<dim>>> &fem_bodies;
-    const GridBoundaries<dim>                  &boundaries;
-    const Tensor<1, dim>                        gravity;
-    const TimeParameters::ImplicitScheme        scheme;
-    const bool                                  with_mpm;
-    SubsteppedMPM<dim>                         *substepped_mpm;
+    const BackgroundGrid<dim>                         &grid;
+    ParticleSystem<dim>                               &particles;
+    const ParticleGridTransfer<dim>                   &transfer;
+    const std::vector<std::unique_ptr<Material<dim>>> &materials;
+    std::vector<std::unique_ptr<FemBody<dim>>>        &fem_bodies;
+    const GridBoundaries<dim>                         &boundaries;
+    const Tensor<1, dim>                               gravity;
+    const TimeParameters::ImplicitScheme               scheme;
+    const bool                                         with_mpm;
+    SubsteppedMPM<dim>                                *substepped_mpm;
+    CmpmDiscretization<dim>                           *cmpm;
 
     DofSpace<dim>           dofs;
     const ContactParameters contact_parameters;
     const bool              with_contact;
     const bool              with_friction;
     InertiaTerm<dim>        inertia;
-    FemElasticityTerm<dim>  fem_elasticity;
-    MpmElasticityTerm<dim>  mpm_elasticity;
+    /** The consistent inertia of cMPM bodies (replaces inertia). */
+    std::unique_ptr<CmpmInertiaTerm<dim>> cmpm_inertia;
+    FemElasticityTerm<dim>                fem_elasticity;
+    MpmElasticityTerm<dim>                mpm_elasticity;
     /** MPM elasticity relative to the substeps' prediction (substepped). */
     RelativeEnergyTerm<dim>               mpm_correction_elasticity;
     std::unique_ptr<ContactGeometry<dim>> contact_geometry;

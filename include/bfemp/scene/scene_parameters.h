@@ -3,6 +3,7 @@
 
 #include <bfemp/base/run_parameters.h>
 #include <bfemp/boundary/grid_boundaries.h>
+#include <bfemp/cmpm/cmpm_parameters.h>
 #include <bfemp/contact/contact_parameters.h>
 #include <bfemp/fem/fem_body_parameters.h>
 #include <bfemp/grid/grid_parameters.h>
@@ -35,6 +36,7 @@ namespace bfemp
     GridParameters<dim>                 grid;
     TimeParameters                      time;
     TransferParameters                  transfer;
+    CmpmParameters                      cmpm;
     Tensor<1, dim>                      gravity;
     GridBoundaries<dim>                 boundaries;
     OutputParameters                    output;
@@ -59,6 +61,10 @@ namespace bfemp
                        const std::vector<unsigned int> &primitives_per_body,
                        const unsigned int               n_level_sets,
                        const unsigned int               n_fem_bodies);
+
+    /** Refuses combinations cMPM does not support (cmpm/enabled). */
+    void
+    check_cmpm() const;
 
     void
     parse_parameters(ParameterHandler &prm);

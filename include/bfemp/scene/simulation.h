@@ -104,9 +104,16 @@ namespace bfemp
     void
     create_integrator();
 
-    /** The next dt; throws if a fixed dt breaks the CFL limit. */
+    /**
+     * The next dt, 0 once the end time is reached; throws if a fixed dt
+     * breaks the CFL limit.
+     */
     double
     next_time_step(const double time, const double max_speed) const;
+
+    /** Whether t is within round-off (1e-6 dt) of `run/end time`. */
+    bool
+    end_reached(const double time, const double dt) const;
 
     /** Throws SimulationError unless the state is finite and uninverted. */
     void
@@ -166,6 +173,8 @@ namespace bfemp
     ParticleGridTransfer<dim>                   transfer;
     /** The substepped integrator's own macro-step transfer, if it has one. */
     std::unique_ptr<ParticleGridTransfer<dim>> macro_transfer;
+    /** cMPM's coarse nodes and shape functions (cmpm/enabled). */
+    std::unique_ptr<CmpmDiscretization<dim>>   cmpm;
     std::vector<std::unique_ptr<FemBody<dim>>> fem_body_list;
     std::unique_ptr<ExplicitMPM<dim>>          explicit_integrator;
     std::unique_ptr<SubsteppedMPM<dim>>        substepped_integrator;

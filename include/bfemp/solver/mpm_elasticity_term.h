@@ -1,6 +1,7 @@
 #ifndef bfemp_solver_mpm_elasticity_term_h
 #define bfemp_solver_mpm_elasticity_term_h
 
+#include <bfemp/cmpm/cmpm_discretization.h>
 #include <bfemp/grid/background_grid.h>
 #include <bfemp/material/material.h>
 #include <bfemp/particles/particle_system.h>
@@ -31,6 +32,12 @@ namespace bfemp
    * Particles stay where they are during the Newton iterations (they move
    * in the G2P after the solve), so the kernel weights are those of the
    * step's start and are recomputed on the fly rather than stored.
+   *
+   * With cMPM (seed 002) the unknowns are coarse nodes and the map from
+   * them to a particle is matrix-valued, u_p = sum_I Phi_I Q_I; then
+   * F_p(u) = (I + sum_I grad(Phi_I u_I)) F_p^n, still linear in u. The
+   * energy, gradient, Hessian and det F bound are written once over a
+   * per-particle stencil that provides dF_p/du_k, for both maps.
    */
   template <int dim>
   class MpmElasticityTerm : public EnergyTerm<dim>
@@ -40,7 +47,8 @@ namespace bfemp
       const BackgroundGrid<dim>                         &grid,
       ParticleSystem<dim>                               &particles,
       const std::vector<std::unique_ptr<Material<dim>>> &materials,
-      const DofSpace<dim>                               &dofs);
+      const DofSpace<dim>                               &dofs,
+      const CmpmDiscretization<dim>                     *cmpm = nullptr);
 
     /** s = 2 alpha beta dt^2, the weight of Psi in eq. 22. */
     void
@@ -75,37 +83,51 @@ namespace bfemp
     minimum_determinant(const Vector<double> &u) const override;
 
   private:
-    template <int degree>
+    /** Calls f(maker) with the stencil maker of the particle-to-unknowns
+     *  map in use (cMPM, or the B-spline kernel of the grid's degree). */
+    template <typename Function>
+    decltype(auto)
+    with_stencil(const Function &f) const;
+
+    template <typename Maker>
     double
-    value(const Vector<double> &u) const;
+    value(const Maker &make_stencil, const Vector<double> &u) const;
 
-    template <int degree>
+    template <typename Maker>
     void
-    add_gradient(const Vector<double> &u, Vector<double> &gradient) const;
+    add_gradient(const Maker          &make_stencil,
+                 const Vector<double> &u,
+                 Vector<double>       &gradient) const;
 
-    template <int degree>
+    template <typename Maker>
     void
-    add_hessian(const Vector<double> &u,
+    add_hessian(const Maker          &make_stencil,
+                const Vector<double> &u,
                 SparseMatrix<double> &hessian,
                 const HessianKind     kind) const;
 
-    template <int degree>
+    template <typename Maker>
     double
-    step_bound(const Vector<double> &u, const Vector<double> &p) const;
+    step_bound(const Maker          &make_stencil,
+               const Vector<double> &u,
+               const Vector<double> &p) const;
 
-    template <int degree>
+    template <typename Maker>
     double
-    minimum_determinant(const Vector<double> &u) const;
+    minimum_determinant(const Maker          &make_stencil,
+                        const Vector<double> &u) const;
 
-    template <int degree>
+    template <typename Maker>
     void
-    add_couplings(NodeSparsity &sparsity) const;
+    add_couplings(const Maker &make_stencil, NodeSparsity &sparsity) const;
 
     const BackgroundGrid<dim>                         &grid;
     ParticleSystem<dim>                               &particles;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
     const DofSpace<dim>                               &dofs;
-    double                                             scale = 1.;
+    /** The cMPM discretization, or nullptr for the grid's kernel. */
+    const CmpmDiscretization<dim> *cmpm;
+    double                         scale = 1.;
   };
 } // namespace bfemp
 

@@ -1,0 +1,335 @@
+// The energy terms of a cMPM step (seed 002 on the implicit solver) against
+// finite differences, 2D and 3D, on a block of particles of two materials
+// (one half 100 times stiffer) over 2^dim coarse elements (boundary
+// B-spline, L = H/2, n = 5):
+// - the MPM elasticity through the matrix-valued map (MpmElasticityTerm
+//   with CmpmDiscretization): gradient against central differences of the
+//   value, Hessian against central differences of the gradient (whole
+//   matrices in 2D, 10 random directions in 3D), with F_p^n
+//   near a stretched rotation so that every tangent is PSD (projection
+//   inactive), and its forces sum to zero over the coarse nodes (partition
+//   of unity: no net internal force);
+// - the consistent inertia over the particles (CmpmInertiaTerm): gradient
+//   and Hessian the same way; both Hessians PSD (2D eigenvalues);
+// - P2G and G2P through Phi: P2G keeps the total momentum, and a uniform
+//   coarse velocity V with u = dt V moves every particle by dt V with
+//   velocity V and leaves F_p unchanged.
+// Round-off dependent numbers go to stdout; the output holds the checks.
+
+#include <bfemp/cmpm/cmpm_discretization.h>
+#include <bfemp/cmpm/cmpm_inertia_term.h>
+#include <bfemp/grid/background_grid.h>
+#include <bfemp/grid/grid_state.h>
+#include <bfemp/particles/particle_layout.h>
+#include <bfemp/particles/particle_system.h>
+#include <bfemp/solver/mpm_elasticity_term.h>
+
+#include <iostream>
+#include <tuple>
+
+#include "solver/solver_test_scene.h"
+
+using namespace dealii;
+using namespace bfemp;
+using bfemp_tests::check;
+
+namespace
+{
+  bfemp_tests::RandomNumbers random_numbers(31415);
+
+  template <int dim>
+  Tensor<2, dim>
+  stretched_rotation()
+  {
+    Tensor<2, dim> R = unit_symmetric_tensor<dim>();
+    R[0][0] = R[1][1] = std::cos(0.2);
+    R[0][1]           = -std::sin(0.2);
+    R[1][0]           = std::sin(0.2);
+    return 1.05 * R;
+  }
+
+  template <int dim>
+  struct Scene
+  {
+    using Layout = ParticleLayout<dim>;
+
+    Scene()
+      : grid(grid_parameters())
+      , particles(grid)
+      , cmpm(grid, cmpm_parameters())
+      , elasticity(grid, particles, materials, dofs, &cmpm)
+      , inertia(particles, cmpm, dofs)
+      , potential_elasticity(dofs)
+      , potential_inertia(dofs)
+    {
+      materials.push_back(
+        create_material<dim>("neo-Hookean",
+                             ElasticModuli::from_young_poisson(1e5, 0.3)));
+      materials.push_back(
+        create_material<dim>("neo-Hookean",
+                             ElasticModuli::from_young_poisson(1e7, 0.3)));
+      // a block over 2^dim elements of H = 0.25, 2 particles per knot span
+      const unsigned int n_1d  = 12;
+      const double       h     = 0.5 / n_1d;
+      unsigned int       total = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        total *= n_1d;
+      for (unsigned int k = 0; k < total; ++k)
+        {
+          Point<dim>   x;
+          unsigned int index = k;
+          for (unsigned int d = 0; d < dim; ++d, index /= n_1d)
+            x[d] = 0.25 + (index % n_1d + 0.5) * h +
+                   random_numbers.uniform(-0.1, 0.1) * h;
+          std::vector<double>     properties(Layout::n_properties, 0.);
+          const ArrayView<double> p = make_array_view(properties);
+          p[Layout::mass]           = 1000. * std::pow(h, dim);
+          p[Layout::rest_volume]    = std::pow(h, dim);
+          p[Layout::material_id]    = x[0] < 0.5 ? 1 : 0;
+          Layout::set_tensor(p,
+                             Layout::deformation_gradient,
+                             stretched_rotation<dim>() +
+                               random_numbers.tensor<dim>(0.005));
+          Layout::set_vector(p,
+                             Layout::velocity,
+                             random_numbers.vector<dim>(1.));
+          Layout::set_vector(p, Layout::initial_position, x);
+          particles.insert(x, make_array_view(std::as_const(properties)));
+        }
+      particles.finish_insertion();
+      cmpm.reinit(particles, materials);
+      cmpm.particles_to_grid(particles, state);
+      // the activity filter of ImplicitIntegrator for cMPM
+      double max_mass = 0.;
+      for (const double m : state.mass)
+        max_mass = std::max(max_mass, m);
+      for (double &m : state.mass)
+        if (m <= 1e-8 * max_mass)
+          m = 0.;
+      dofs.reinit({}, state.mass);
+      inertia.reinit(1e-2, 1e-4, Tensor<1, dim>());
+      potential_elasticity.set_terms({&elasticity});
+      potential_elasticity.setup_system();
+      potential_inertia.set_terms({&inertia});
+      potential_inertia.setup_system();
+    }
+
+    static GridParameters<dim>
+    grid_parameters()
+    {
+      GridParameters<dim> parameters;
+      for (unsigned int d = 0; d < dim; ++d)
+        parameters.upper_corner[d] = 1.;
+      parameters.cell_size = 0.25;
+      return parameters;
+    }
+
+    static CmpmParameters
+    cmpm_parameters()
+    {
+      CmpmParameters parameters;
+      parameters.enabled = true;
+      parameters.n_fine  = 5;
+      return parameters;
+    }
+
+    Vector<double>
+    random_displacement(const double amplitude)
+    {
+      Vector<double> u(dofs.n_dofs());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        u[i] = random_numbers.uniform(-amplitude, amplitude);
+      return u;
+    }
+
+    BackgroundGrid<dim>                         grid;
+    ParticleSystem<dim>                         particles;
+    std::vector<std::unique_ptr<Material<dim>>> materials;
+    CmpmDiscretization<dim>                     cmpm;
+    GridState<dim>                              state;
+    DofSpace<dim>                               dofs;
+    MpmElasticityTerm<dim>                      elasticity;
+    CmpmInertiaTerm<dim>                        inertia;
+    IncrementalPotential<dim>                   potential_elasticity;
+    IncrementalPotential<dim>                   potential_inertia;
+  };
+
+  /**
+   * Gradient and Hessian of @p term against central differences: whole
+   * matrices in 2D; in 3D (hundreds of unknowns) along 10 random
+   * directions d: g.d against the difference of the value, H d against the
+   * difference of the gradient.
+   */
+  template <int dim>
+  void
+  check_term(const std::string         &what,
+             const EnergyTerm<dim>     &term,
+             IncrementalPotential<dim> &potential,
+             const Vector<double>      &u,
+             const double               h)
+  {
+    Vector<double> g(u.size());
+    term.add_gradient(u, g);
+    const SparseMatrix<double> &H              = potential.hessian(u);
+    double                      gradient_error = 0., hessian_error = 0.;
+    if (dim == 2)
+      {
+        const Vector<double> g_fd = bfemp_tests::finite_difference_gradient(
+          [&](const Vector<double> &v) { return term.value(v); },
+          u,
+          h);
+        const FullMatrix<double> H_fd = bfemp_tests::finite_difference_hessian(
+          [&](const Vector<double> &v, Vector<double> &grad) {
+            term.add_gradient(v, grad);
+          },
+          u,
+          h);
+        gradient_error = bfemp_tests::relative_difference(g_fd, g);
+        hessian_error =
+          bfemp_tests::relative_difference(bfemp_tests::dense(H), H_fd);
+      }
+    else
+      for (unsigned int k = 0; k < 10; ++k)
+        {
+          Vector<double> d(u.size()), plus(u), minus(u), g_plus(u.size()),
+            g_minus(u.size()), Hd(u.size());
+          for (unsigned int i = 0; i < d.size(); ++i)
+            d[i] = random_numbers.uniform(-1., 1.);
+          plus.add(h, d);
+          minus.add(-h, d);
+          const double slope = (term.value(plus) - term.value(minus)) / (2 * h);
+          gradient_error =
+            std::max(gradient_error,
+                     std::abs(slope - g * d) / (g.l2_norm() * d.l2_norm()));
+          term.add_gradient(plus, g_plus);
+          term.add_gradient(minus, g_minus);
+          g_plus.add(-1., g_minus);
+          g_plus /= 2 * h;
+          H.vmult(Hd, d);
+          Hd.add(-1., g_plus);
+          hessian_error =
+            std::max(hessian_error, Hd.l2_norm() / g_plus.l2_norm());
+        }
+    double min_eigenvalue = 0., max_eigenvalue = 0.;
+    if (dim == 2)
+      std::tie(min_eigenvalue, max_eigenvalue) =
+        bfemp_tests::eigenvalue_range(bfemp_tests::dense(H));
+    std::cout << what << ": gradient error " << gradient_error
+              << ", Hessian error " << hessian_error << ", eigenvalues ["
+              << min_eigenvalue << ", " << max_eigenvalue << "]" << std::endl;
+    check(gradient_error < 1e-6, what + ": gradient matches differences");
+    check(hessian_error < 1e-6,
+          what + ": Hessian matches differences of the gradient");
+    if (dim == 2)
+      check(min_eigenvalue >= -1e-10 * max_eigenvalue, what + ": Hessian PSD");
+  }
+
+  template <int dim>
+  void
+  test()
+  {
+    using Layout           = ParticleLayout<dim>;
+    const std::string name = std::to_string(dim) + "D ";
+    Scene<dim>        scene;
+    deallog << name << scene.particles.n_particles() << " particles, "
+            << scene.dofs.n_grid_nodes() << " coarse nodes as unknowns"
+            << std::endl;
+
+    const Vector<double> u = scene.random_displacement(2e-4);
+    check_term<dim>(name + "cMPM elasticity",
+                    scene.elasticity,
+                    scene.potential_elasticity,
+                    u,
+                    1e-7);
+    check_term<dim>(name + "cMPM inertia",
+                    scene.inertia,
+                    scene.potential_inertia,
+                    u,
+                    1e-7);
+
+    // no net internal force: sum over nodes of dE/du_I = 0
+    Vector<double> g(u.size());
+    scene.elasticity.add_gradient(u, g);
+    Tensor<1, dim> net;
+    double         largest = 0.;
+    for (unsigned int node = 0; node < scene.dofs.n_nodes(); ++node)
+      {
+        net += DofSpace<dim>::get(g, node);
+        largest = std::max(largest, DofSpace<dim>::get(g, node).norm());
+      }
+    std::cout << name << "net internal force " << net.norm() << " of "
+              << largest << std::endl;
+    check(net.norm() < 1e-10 * largest,
+          name + "the elastic forces sum to zero over the coarse nodes");
+
+    // P2G keeps the momentum
+    Tensor<1, dim> particle_momentum, grid_momentum;
+    for (const auto &particle : scene.particles.handler())
+      {
+        const auto p = particle.get_properties();
+        particle_momentum +=
+          p[Layout::mass] * Layout::get_vector(p, Layout::velocity);
+      }
+    GridState<dim> state;
+    scene.cmpm.particles_to_grid(scene.particles, state);
+    for (const auto &momentum : state.velocity)
+      grid_momentum += momentum;
+    check((grid_momentum - particle_momentum).norm() <
+            1e-12 * particle_momentum.norm(),
+          name + "P2G: sum_I sum_p m_p Phi_Ip^T v_p = sum_p m_p v_p");
+
+    // G2P of a uniform coarse velocity: a translation
+    Tensor<1, dim> V;
+    for (unsigned int d = 0; d < dim; ++d)
+      V[d] = 0.3 - 0.2 * d;
+    const double dt = 0.01;
+    for (std::size_t i = 0; i < state.mass.size(); ++i)
+      {
+        state.new_velocity[i] = V;
+        state.displacement[i] = dt * V;
+      }
+    std::vector<Point<dim>>     before;
+    std::vector<Tensor<2, dim>> F_before;
+    for (const auto &particle : scene.particles.handler())
+      {
+        before.push_back(particle.get_location());
+        F_before.push_back(Layout::get_tensor(particle.get_properties(),
+                                              Layout::deformation_gradient));
+      }
+    TransferParameters pic;
+    pic.scheme = TransferParameters::Scheme::pic;
+    scene.cmpm.grid_to_particles(scene.particles, state, pic);
+    double       position_error = 0., velocity_error = 0., F_error = 0.;
+    unsigned int q = 0;
+    for (const auto &particle : scene.particles.handler())
+      {
+        const auto p = particle.get_properties();
+        position_error =
+          std::max(position_error,
+                   (particle.get_location() - before[q] - dt * V).norm());
+        velocity_error =
+          std::max(velocity_error,
+                   (Layout::get_vector(p, Layout::velocity) - V).norm());
+        F_error =
+          std::max(F_error,
+                   (Layout::get_tensor(p, Layout::deformation_gradient) -
+                    F_before[q])
+                     .norm());
+        ++q;
+      }
+    check(position_error < 1e-14 && velocity_error < 1e-12 && F_error < 1e-12,
+          name + "G2P of a uniform coarse velocity translates every particle "
+                 "and keeps F_p");
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bfemp_tests::initlog();
+  test<2>();
+  test<3>();
+}
