@@ -43,9 +43,9 @@ namespace bfemp
     if (cmpm)
       cmpm_inertia =
         std::make_unique<CmpmInertiaTerm<dim>>(particles, *cmpm, dofs);
-    std::vector<const EnergyTerm<dim> *> terms = {
-      cmpm ? static_cast<const EnergyTerm<dim> *>(cmpm_inertia.get())
-           : &inertia};
+    std::vector<const EnergyTerm<dim> *> terms = {&inertia};
+    if (cmpm)
+      terms.push_back(cmpm_inertia.get());
     if (std::any_of(fem_bodies.begin(), fem_bodies.end(), [](const auto &b) {
           return !b->is_kinematic();
         }))
@@ -496,9 +496,22 @@ namespace bfemp
       contact_geometry->begin_step(time + dt);
     const Vector<double> acceleration = start_acceleration();
     const Vector<double> predicted    = predictor(acceleration, dt);
-    inertia.reinit(node_mass, predicted);
     if (cmpm_inertia)
-      cmpm_inertia->reinit(dt, scale, gravity);
+      {
+        // cMPM's inertia is the consistent one over the particles. Coarse
+        // nodes whose shape functions the particles see only in combination
+        // leave it singular (combinations that vanish at every particle);
+        // a lumped nodal inertia 1e-8 times the nodes' marks keeps the
+        // Newton matrix definite and moves such combinations with the
+        // body. It changes the momentum by at most 1e-8 of the step's.
+        std::vector<double> regularization(node_mass);
+        for (double &m : regularization)
+          m *= 1e-8;
+        inertia.reinit(regularization, predicted);
+        cmpm_inertia->reinit(dt, scale, gravity);
+      }
+    else
+      inertia.reinit(node_mass, predicted);
     if (with_mpm && substepped_mpm)
       mpm_correction_elasticity.set_reference(predicted);
 
