@@ -84,6 +84,7 @@ main(int argc, char **argv)
   if (argc < 2)
     return usage();
   const std::string argument = argv[1];
+  std::string       file;
   try
     {
       if (argument == "--print-parameters")
@@ -91,8 +92,8 @@ main(int argc, char **argv)
           print_parameters(argc > 2 ? argv[2] : ".");
           return 0;
         }
-      const bool        validate = argument == "--validate";
-      const std::string file     = validate && argc == 3 ? argv[2] : argument;
+      const bool validate = argument == "--validate";
+      file                = validate && argc == 3 ? argv[2] : argument;
       if ((validate && argc != 3) || (!validate && argc > 2) ||
           file.rfind("--", 0) == 0)
         return usage();
@@ -101,7 +102,14 @@ main(int argc, char **argv)
     }
   catch (const bfemp::InputError &error)
     {
-      std::cerr << "bfemp: input error: " << error.what() << std::endl;
+      // Every refusal names the file; errors raised deep in a run (a
+      // muParser expression that turns NaN at some t) know only their
+      // subsection and entry, so the file is added here.
+      const std::string message = error.what();
+      std::cerr << "bfemp: input error: "
+                << (file.empty() || message.rfind(file, 0) == 0 ? ""
+                                                                : file + ": ")
+                << message << std::endl;
       return 1;
     }
   catch (const bfemp::SimulationError &error)

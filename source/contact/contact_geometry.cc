@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace bfemp
 {
@@ -568,9 +569,11 @@ namespace bfemp
 
 
   template <int dim>
-  unsigned int
-  ContactGeometry<dim>::particles_inside(const Vector<double> &u) const
+  std::vector<unsigned int>
+  ContactGeometry<dim>::containing_bodies(const Vector<double> &u) const
   {
+    std::vector<unsigned int> containing(start_positions.size(),
+                                         numbers::invalid_unsigned_int);
     struct ElementReference
     {
       unsigned int body, element;
@@ -595,42 +598,76 @@ namespace bfemp
           }
       }
     if (boxes.empty() || start_positions.empty())
-      return 0;
+      return containing;
     const SpatialHash<dim> hash(boxes);
 
-    return chunked_sum<unsigned int>(
-      start_positions.size(),
-      [&](const std::size_t i) {
-        const Point<dim> xq =
-          particle_position(static_cast<unsigned int>(i), u);
-        thread_local std::vector<unsigned int> candidates;
-        hash.query(box_of(xq), candidates);
-        for (const unsigned int c : candidates)
-          {
-            const auto &element = bodies[references[c].body]
-                                    ->mesh()
-                                    .elements()[references[c].element];
-            const auto &xs = x[references[c].body];
-            // Barycentric coordinates from the edge matrix of the simplex.
-            Tensor<2, dim> edges;
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int d = 0; d < dim; ++d)
-                edges[d][a] = xs[element[a + 1]][d] - xs[element[0]][d];
-            if (determinant(edges) == 0.)
-              continue;
-            const Tensor<1, dim> lambda = invert(edges) * (xq - xs[element[0]]);
-            double               sum    = 0.;
-            bool                 within = true;
+    const auto containing_body = [&](const unsigned int q) {
+      const Point<dim>                       xq = particle_position(q, u);
+      thread_local std::vector<unsigned int> candidates;
+      hash.query(box_of(xq), candidates);
+      for (const unsigned int c : candidates)
+        {
+          const auto &element = bodies[references[c].body]
+                                  ->mesh()
+                                  .elements()[references[c].element];
+          const auto &xs = x[references[c].body];
+          // Barycentric coordinates from the edge matrix of the simplex.
+          Tensor<2, dim> edges;
+          for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int d = 0; d < dim; ++d)
-              {
-                within = within && lambda[d] > 0.;
-                sum += lambda[d];
-              }
-            if (within && sum < 1.)
-              return 1u;
-          }
-        return 0u;
-      });
+              edges[d][a] = xs[element[a + 1]][d] - xs[element[0]][d];
+          if (determinant(edges) == 0.)
+            continue;
+          const Tensor<1, dim> lambda = invert(edges) * (xq - xs[element[0]]);
+          double               sum    = 0.;
+          bool                 within = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              within = within && lambda[d] > 0.;
+              sum += lambda[d];
+            }
+          if (within && sum < 1.)
+            return references[c].body;
+        }
+      return numbers::invalid_unsigned_int;
+    };
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      start_positions.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t q = begin; q < end; ++q)
+          containing[q] = containing_body(static_cast<unsigned int>(q));
+      },
+      256);
+    return containing;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactGeometry<dim>::particles_inside(const Vector<double> &u) const
+  {
+    const std::vector<unsigned int> containing = containing_bodies(u);
+    return std::count_if(containing.begin(),
+                         containing.end(),
+                         [](const unsigned int s) {
+                           return s != numbers::invalid_unsigned_int;
+                         });
+  }
+
+
+
+  template <int dim>
+  std::set<std::pair<unsigned int, unsigned int>>
+  ContactGeometry<dim>::overlapping_bodies(const Vector<double> &u) const
+  {
+    const std::vector<unsigned int> containing = containing_bodies(u);
+    std::set<std::pair<unsigned int, unsigned int>> pairs;
+    for (unsigned int q = 0; q < containing.size(); ++q)
+      if (containing[q] != numbers::invalid_unsigned_int)
+        pairs.emplace(body_ids[q], containing[q]);
+    return pairs;
   }
 
 

@@ -560,6 +560,17 @@ namespace bfemp
 
 
   template <int dim>
+  std::set<std::pair<unsigned int, unsigned int>>
+  ImplicitIntegrator<dim>::bodies_overlapping_fem() const
+  {
+    if (!with_contact)
+      return {};
+    return contact_geometry->overlapping_bodies(Vector<double>(dofs.n_dofs()));
+  }
+
+
+
+  template <int dim>
   void
   ImplicitIntegrator<dim>::resume_friction_dissipation(const double accumulated)
   {

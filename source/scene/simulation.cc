@@ -86,12 +86,26 @@ namespace bfemp
         const unsigned int touching =
           implicit_integrator->particles_touching_fem();
         if (touching > 0)
-          throw InputError(
-            parameter_file + ": MPM bodies and FEM bodies overlap at t = 0: " +
-            std::to_string(touching) +
-            " particle(s) lie inside an FEM mesh or on its boundary. Bodies "
-            "must start apart; a particle closer than 'contact/activation "
-            "distance' feels the barrier from the first step.");
+          {
+            // name the bodies: those with a particle inside an element, or
+            // all when particles only touch a boundary (distance 0)
+            std::string which;
+            for (const auto &[mpm, fem] :
+                 implicit_integrator->bodies_overlapping_fem())
+              which += std::string(which.empty() ? "" : ", ") +
+                       "subsections 'body " + std::to_string(mpm) +
+                       "' and 'fem body " + std::to_string(fem) + "'";
+            throw InputError(
+              parameter_file + ": " +
+              (which.empty() ? std::string("MPM bodies and FEM bodies")
+                             : which) +
+              ": MPM bodies and FEM bodies overlap at t = 0: " +
+              std::to_string(touching) +
+              " particle(s) lie inside an FEM mesh or on its boundary. "
+              "Bodies must start apart; a particle closer than "
+              "'contact/activation distance' feels the barrier from the "
+              "first step.");
+          }
       }
     else if (!time.is_substepped())
       explicit_integrator =

@@ -11,6 +11,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace bfemp
@@ -168,6 +170,13 @@ namespace bfemp
     unsigned int
     particles_inside(const Vector<double> &u) const;
 
+    /**
+     * The (MPM body, FEM body) pairs with a particle of the first inside an
+     * element of the second at u: what the input check at t = 0 names.
+     */
+    std::set<std::pair<unsigned int, unsigned int>>
+    overlapping_bodies(const Vector<double> &u) const;
+
     /** CCD pair tests since construction. */
     unsigned long
     n_ccd_queries() const;
@@ -176,6 +185,11 @@ namespace bfemp
     template <int degree>
     void
     gather_particles();
+
+    /** For every particle the FEM body with an element containing it at u,
+     *  or numbers::invalid_unsigned_int. */
+    std::vector<unsigned int>
+    containing_bodies(const Vector<double> &u) const;
 
     /** Motion of every surface node along p (obstacles: to - from). */
     std::vector<std::vector<Tensor<1, dim>>>

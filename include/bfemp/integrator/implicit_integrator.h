@@ -125,6 +125,13 @@ namespace bfemp
     unsigned int
     particles_touching_fem();
 
+    /**
+     * After particles_touching_fem(): the (MPM body, FEM body) pairs with a
+     * particle of the first inside the second, for the message.
+     */
+    std::set<std::pair<unsigned int, unsigned int>>
+    bodies_overlapping_fem() const;
+
   private:
     /** P2G of mass and momentum (Algorithm 1 line 2); v = (m v) / m. */
     void
