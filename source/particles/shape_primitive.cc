@@ -2,7 +2,11 @@
 #include <bfemp/base/parameter_tools.h>
 #include <bfemp/particles/shape_primitive.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 namespace bfemp
 {
@@ -49,6 +53,28 @@ namespace bfemp
                        components<dim>(0, 1, 0),
                        "[-] Semi-ring: the kept half is where (x - center) . "
                        "direction >= 0");
+    prm.declare_entry("rotation angle",
+                      "0",
+                      Patterns::Double(),
+                      std::string("[rad] Rotation of the primitive, "
+                                  "counter-clockwise ") +
+                        (dim == 2 ? "in the plane"
+                                  : "about 'rotation axis' (right-hand rule)") +
+                        ", about 'rotation center': a tilted box, an oriented "
+                        "semi-ring.");
+    if (dim == 3)
+      declare_point<dim>(prm,
+                         "rotation axis",
+                         components<dim>(0, 0, 1),
+                         "[-] 3D: axis of 'rotation angle' (any nonzero "
+                         "vector)");
+    prm.declare_entry("rotation center",
+                      "",
+                      Patterns::Anything(),
+                      "[m] Pivot of 'rotation angle'; empty: the primitive's "
+                      "own centre (box: the midpoint of its corners). Give the "
+                      "primitives of a body one pivot to rotate the whole "
+                      "body.");
   }
 
 
@@ -71,6 +97,63 @@ namespace bfemp
     inner_radius           = prm.get_double("inner radius");
     outer_radius           = prm.get_double("outer radius");
     direction              = get_vector<dim>(prm, "direction");
+
+    // the rotation (Rodrigues in 3D) about the pivot
+    const double angle = prm.get_double("rotation angle");
+    Tensor<1, 3> axis;
+    axis[2] = 1.;
+    if constexpr (dim == 3)
+      {
+        const Tensor<1, dim> a = get_vector<dim>(prm, "rotation axis");
+        require_input(a.norm() > 0.,
+                      where,
+                      "rotation axis",
+                      to_input_string(Point<dim>(a)),
+                      "must be a nonzero vector");
+        for (unsigned int d = 0; d < 3; ++d)
+          axis[d] = a[d] / a.norm();
+      }
+    Tensor<2, 3> K;
+    K[0][1]               = -axis[2];
+    K[0][2]               = axis[1];
+    K[1][0]               = axis[2];
+    K[1][2]               = -axis[0];
+    K[2][0]               = -axis[1];
+    K[2][1]               = axis[0];
+    const Tensor<2, 3> R3 = Tensor<2, 3>(unit_symmetric_tensor<3>()) +
+                            std::sin(angle) * K +
+                            (1. - std::cos(angle)) * K * K;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        rotation[i][j] = R3[i][j];
+    const std::string pivot_text = Utilities::trim(prm.get("rotation center"));
+    if (pivot_text.empty())
+      pivot = type == Type::box
+                ? Point<dim>(0.5 * (lower_corner + upper_corner))
+                : center;
+    else
+      {
+        const auto numbers = Utilities::split_string_list(pivot_text, ',');
+        require_input(numbers.size() == dim,
+                      where,
+                      "rotation center",
+                      pivot_text,
+                      "must be empty or " + std::to_string(dim) +
+                        " comma-separated numbers [m]");
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            char        *end   = nullptr;
+            const double value = std::strtod(numbers[d].c_str(), &end);
+            require_input(end != numbers[d].c_str() && *end == '\0' &&
+                            std::isfinite(value),
+                          where,
+                          "rotation center",
+                          pivot_text,
+                          "must be empty or " + std::to_string(dim) +
+                            " comma-separated numbers [m]");
+            pivot[d] = value;
+          }
+      }
 
     if (type == Type::box)
       for (unsigned int d = 0; d < dim; ++d)
@@ -107,8 +190,10 @@ namespace bfemp
 
   template <int dim>
   double
-  ShapePrimitive<dim>::outside_measure(const Point<dim> &x) const
+  ShapePrimitive<dim>::outside_measure(const Point<dim> &rotated_x) const
   {
+    // back to the unrotated primitive: x = pivot + R^T (x' - pivot)
+    const Point<dim> x = pivot + transpose(rotation) * (rotated_x - pivot);
     switch (type)
       {
         case Type::box:
@@ -159,6 +244,31 @@ namespace bfemp
   template <int dim>
   BoundingBox<dim>
   ShapePrimitive<dim>::bounding_box() const
+  {
+    // the box around the rotated corners of the unrotated box
+    const BoundingBox<dim> box = unrotated_bounding_box();
+    Point<dim>             lower, upper;
+    for (unsigned int v = 0; v < (1u << dim); ++v)
+      {
+        Point<dim> corner;
+        for (unsigned int d = 0; d < dim; ++d)
+          corner[d] = (v >> d) & 1 ? box.get_boundary_points().second[d]
+                                   : box.get_boundary_points().first[d];
+        const Point<dim> x = pivot + rotation * (corner - pivot);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = v == 0 ? x[d] : std::min(lower[d], x[d]);
+            upper[d] = v == 0 ? x[d] : std::max(upper[d], x[d]);
+          }
+      }
+    return BoundingBox<dim>(std::make_pair(lower, upper));
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  ShapePrimitive<dim>::unrotated_bounding_box() const
   {
     if (type == Type::box)
       return BoundingBox<dim>(std::make_pair(lower_corner, upper_corner));

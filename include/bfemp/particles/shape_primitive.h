@@ -4,6 +4,8 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 
 #include <string>
 
@@ -15,7 +17,9 @@ namespace bfemp
    * One primitive of a body's shape, prm subsection "primitive j" of a body:
    * a box, a ball (disk in 2D), a shell (ring in 2D) or a half shell
    * (semi-ring). Bodies combine primitives in order: "add" unites, "subtract"
-   * removes.
+   * removes. Any primitive may be rotated ("rotation angle", in 3D about
+   * "rotation axis") about its own centre or about a common "rotation
+   * center", which rotates a whole CSG body when its primitives share it.
    */
   template <int dim>
   struct ShapePrimitive
@@ -37,6 +41,11 @@ namespace bfemp
     double     outer_radius = 0.;
     /** The semi-shell keeps the half with (x - center) . direction >= 0. */
     Tensor<1, dim> direction;
+    /** The rotation R applied to the primitive about pivot (identity if
+     *  none): a point x belongs to it if pivot + R^T (x - pivot) belongs to
+     *  the unrotated primitive. */
+    Tensor<2, dim> rotation = unit_symmetric_tensor<dim>();
+    Point<dim>     pivot;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -57,6 +66,10 @@ namespace bfemp
     bounding_box() const;
 
   private:
+    /** The unrotated bounding box. */
+    BoundingBox<dim>
+    unrotated_bounding_box() const;
+
     /** Signed measure that is <= 0 inside and > 0 outside. */
     double
     outside_measure(const Point<dim> &x) const;
