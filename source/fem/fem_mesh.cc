@@ -1,6 +1,7 @@
 #include <deal.II/base/config.h>
 
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/rotation.h>
 #include <bfemp/fem/fem_mesh.h>
 
 #include <deal.II/base/exceptions.h>
@@ -379,15 +380,23 @@ namespace bfemp
   {
     generate(parameters, where);
 
-    // Rotation about the z axis through the centre (in 2D the plane's own
-    // rotation), then the translation.
+    // Rotation about 'rotation axis' through the centre (2D: the plane's own
+    // rotation), then the translation. About the z axis the plane formula
+    // is kept, so meshes of earlier scenes stay the same to the last bit.
     const double     cos_a = std::cos(parameters.rotation_angle);
     const double     sin_a = std::sin(parameters.rotation_angle);
     const Point<dim> c     = parameters.center;
     const auto       shift = parameters.translation;
+    Tensor<1, dim>   z_axis;
+    z_axis[dim - 1]    = 1.;
+    const bool about_z = dim == 2 || parameters.rotation_axis == z_axis;
+    const Tensor<2, dim> R =
+      rotation_matrix<dim>(parameters.rotation_angle, parameters.rotation_axis);
     if (parameters.rotation_angle != 0. || shift.norm() != 0.)
       GridTools::transform(
         [&](const Point<dim> &x) {
+          if (!about_z)
+            return Point<dim>(c + R * (x - c) + shift);
           Point<dim> y = x;
           y[0]         = c[0] + cos_a * (x[0] - c[0]) - sin_a * (x[1] - c[1]);
           y[1]         = c[1] + sin_a * (x[0] - c[0]) + cos_a * (x[1] - c[1]);

@@ -80,7 +80,13 @@ namespace bfemp
                       Patterns::Double(),
                       "[rad] Rotation of the mesh after generation or "
                       "reading, counter-clockwise about 'center' (3D: about "
-                      "the z axis through 'center').");
+                      "'rotation axis' through 'center', right-hand rule).");
+    if (dim == 3)
+      declare_point<dim>(prm,
+                         "rotation axis",
+                         components<dim>(0, 0, 1),
+                         "[-] 3D: axis of 'rotation angle' (any nonzero "
+                         "vector)");
     declare_point<dim>(prm,
                        "translation",
                        components<dim>(0, 0, 0),
@@ -109,7 +115,11 @@ namespace bfemp
     outer_radius           = prm.get_double("outer radius");
     target_edge_length     = prm.get_double("target edge length");
     rotation_angle         = prm.get_double("rotation angle");
-    translation            = get_vector<dim>(prm, "translation");
+    rotation_axis          = Tensor<1, dim>();
+    rotation_axis[dim - 1] = 1.;
+    if (dim == 3)
+      rotation_axis = get_vector<dim>(prm, "rotation axis");
+    translation = get_vector<dim>(prm, "translation");
     file.clear();
 
     require_input(target_edge_length > 0. && std::isfinite(target_edge_length),
@@ -122,6 +132,11 @@ namespace bfemp
                   "rotation angle",
                   prm.get("rotation angle"),
                   "must be a finite number [rad]");
+    require_input(rotation_axis.norm() > 0.,
+                  where,
+                  "rotation axis",
+                  to_input_string(Point<dim>(rotation_axis)),
+                  "must be a nonzero vector");
 
     switch (source)
       {

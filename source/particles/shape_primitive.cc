@@ -1,5 +1,6 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/parameter_tools.h>
+#include <bfemp/base/rotation.h>
 #include <bfemp/particles/shape_primitive.h>
 
 #include <deal.II/base/utilities.h>
@@ -99,33 +100,19 @@ namespace bfemp
     direction              = get_vector<dim>(prm, "direction");
 
     // the rotation (Rodrigues in 3D) about the pivot
-    const double angle = prm.get_double("rotation angle");
-    Tensor<1, 3> axis;
-    axis[2] = 1.;
+    const double   angle = prm.get_double("rotation angle");
+    Tensor<1, dim> axis;
+    axis[dim - 1] = 1.;
     if constexpr (dim == 3)
       {
-        const Tensor<1, dim> a = get_vector<dim>(prm, "rotation axis");
-        require_input(a.norm() > 0.,
+        axis = get_vector<dim>(prm, "rotation axis");
+        require_input(axis.norm() > 0.,
                       where,
                       "rotation axis",
-                      to_input_string(Point<dim>(a)),
+                      to_input_string(Point<dim>(axis)),
                       "must be a nonzero vector");
-        for (unsigned int d = 0; d < 3; ++d)
-          axis[d] = a[d] / a.norm();
       }
-    Tensor<2, 3> K;
-    K[0][1]               = -axis[2];
-    K[0][2]               = axis[1];
-    K[1][0]               = axis[2];
-    K[1][2]               = -axis[0];
-    K[2][0]               = -axis[1];
-    K[2][1]               = axis[0];
-    const Tensor<2, 3> R3 = Tensor<2, 3>(unit_symmetric_tensor<3>()) +
-                            std::sin(angle) * K +
-                            (1. - std::cos(angle)) * K * K;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        rotation[i][j] = R3[i][j];
+    rotation                     = rotation_matrix<dim>(angle, axis);
     const std::string pivot_text = Utilities::trim(prm.get("rotation center"));
     if (pivot_text.empty())
       pivot = type == Type::box

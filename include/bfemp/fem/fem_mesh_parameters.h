@@ -69,6 +69,9 @@ namespace bfemp
     /** Entry "rotation angle" [rad]. */
     double rotation_angle = 0.;
 
+    /** Entry "rotation axis" (3D; the z axis in 2D). */
+    Tensor<1, dim> rotation_axis;
+
     /** Entry "translation" [m]. */
     Tensor<1, dim> translation;
 
