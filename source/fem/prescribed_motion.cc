@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/muparser_tools.h>
 #include <bfemp/fem/prescribed_motion.h>
 
 #include <deal.II/base/exceptions.h>
@@ -40,43 +41,8 @@ namespace bfemp
 
   namespace
   {
-    /**
-     * Collects what is written to std::cerr while it lives: deal.II 9.4
-     * prints muParser's error report there before throwing, and bfemp
-     * reports the error itself, as an InputError. Used only while the
-     * parameters are read (one thread).
-     */
-    class CerrCapture
-    {
-    public:
-      CerrCapture()
-        : previous(std::cerr.rdbuf(captured.rdbuf()))
-      {}
-
-      ~CerrCapture()
-      {
-        std::cerr.rdbuf(previous);
-      }
-
-    private:
-      std::ostringstream captured;
-      std::streambuf    *previous;
-    };
-
-    /** "The parser said: ..." of deal.II's ExcParseError, or all of the
-     *  exception's description for other exceptions. */
-    std::string
-    parser_message(const ExceptionBase &exception)
-    {
-      std::ostringstream info;
-      exception.print_info(info);
-      std::string       message = Utilities::trim(info.str());
-      const std::string marker  = "The parser said: ";
-      const std::size_t start   = message.find(marker);
-      if (start != std::string::npos)
-        message = message.substr(start + marker.size());
-      return Utilities::trim(message);
-    }
+    using muparser_tools::CerrCapture;
+    using muparser_tools::parser_message;
 
     std::string
     joined(const std::vector<std::string> &expressions)

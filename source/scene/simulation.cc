@@ -215,7 +215,7 @@ namespace bfemp
         std::fill(properties.begin(), properties.end(), 0.);
         p[Layout::mass]        = body.material.density * volume;
         p[Layout::rest_volume] = volume;
-        Layout::set_vector(p, Layout::velocity, body.initial_velocity);
+
         Layout::set_tensor(p,
                            Layout::deformation_gradient,
                            unit_symmetric_tensor<dim>());
@@ -223,6 +223,18 @@ namespace bfemp
         p[Layout::body_id]     = b;
         for (const Point<dim> &x : samples[b])
           {
+            const Tensor<1, dim> v = body.initial_velocity_at(x);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (!std::isfinite(v[d]))
+                throw InputError(
+                  parameter_file + ": subsection 'body " + std::to_string(b) +
+                  "', entry 'initial velocity': component " +
+                  std::to_string(d) + " ('" +
+                  body.initial_velocity_expressions[d] +
+                  "') is not finite at the particle at " +
+                  to_input_string(x) +
+                  "; the expressions must be finite on the whole body");
+            Layout::set_vector(p, Layout::velocity, v);
             Layout::set_vector(p, Layout::initial_position, x);
             particle_system.insert(x, p);
           }

@@ -4,8 +4,11 @@
 #include <bfemp/material/material_parameters.h>
 #include <bfemp/particles/shape_primitive.h>
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace bfemp
@@ -22,8 +25,12 @@ namespace bfemp
     unsigned int                     particles_per_direction = 2;
     bool                             jittered                = false;
     unsigned int                     jitter_seed             = 1;
-    Tensor<1, dim>                   initial_velocity;
-    MaterialParameters               material;
+    /** Entry "initial velocity" when it holds numbers only. */
+    Tensor<1, dim> initial_velocity;
+    /** Its components as written: numbers, or muParser expressions of the
+     *  rest position (x, y, z) and pi. */
+    std::vector<std::string> initial_velocity_expressions;
+    MaterialParameters       material;
 
     /** Declares the entries of a body with @p n_primitives primitives. */
     static void
@@ -35,6 +42,22 @@ namespace bfemp
 
     void
     parse_parameters(ParameterHandler &prm, const std::string &where);
+
+    /**
+     * The initial velocity of a particle at @p x: the constant, or the
+     * expressions evaluated there (not checked for NaN: the caller names
+     * the file and the point).
+     */
+    Tensor<1, dim>
+    initial_velocity_at(const Point<dim> &x) const;
+
+  private:
+    /** Reads the entry "initial velocity" (numbers or expressions). */
+    void
+    parse_initial_velocity(const std::string &text, const std::string &where);
+
+    /** The parsed expressions; null when the velocity is constant. */
+    std::shared_ptr<FunctionParser<dim>> velocity_function;
   };
 } // namespace bfemp
 
