@@ -29,7 +29,7 @@ namespace bfemp
                       "or H/2 (nodes also at edge and face centres).");
     prm.declare_entry("fine nodes per direction",
                       "7",
-                      Patterns::Integer(),
+                      Patterns::Integer(5, 32),
                       "[-] n quadratic B-spline functions per direction in "
                       "each coarse element (n >= 5); the fine knot span is "
                       "s = H / (n - 2).");
