@@ -1,6 +1,6 @@
 #include <bfemp/base/input_error.h>
-#include <bfemp/base/parameter_tools.h>
 #include <bfemp/base/muparser_tools.h>
+#include <bfemp/base/parameter_tools.h>
 #include <bfemp/particles/body_parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -94,7 +94,7 @@ namespace bfemp
 
     // muParser compiles at the first evaluation: syntax errors and unknown
     // names show up there, which is done here, at the grid's origin
-    initial_velocity = Tensor<1, dim>();
+    initial_velocity         = Tensor<1, dim>();
     auto              parser = std::make_shared<FunctionParser<dim>>(dim);
     const CerrCapture quiet;
     try

@@ -231,8 +231,7 @@ namespace bfemp
                   "', entry 'initial velocity': component " +
                   std::to_string(d) + " ('" +
                   body.initial_velocity_expressions[d] +
-                  "') is not finite at the particle at " +
-                  to_input_string(x) +
+                  "') is not finite at the particle at " + to_input_string(x) +
                   "; the expressions must be finite on the whole body");
             Layout::set_vector(p, Layout::velocity, v);
             Layout::set_vector(p, Layout::initial_position, x);

@@ -11,6 +11,7 @@
 #include <bfemp/scene/simulation.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -109,7 +110,18 @@ namespace
         error =
           std::max(error, std::abs(c[3 + d][last] / c[2][last] - expected));
       }
-    deallog << dim << "D: t = " << t << ", steps " << last << std::endl;
+    std::string velocity;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        char number[32];
+        std::snprintf(number,
+                      sizeof(number),
+                      " %.6f",
+                      c[3 + d][last] / c[2][last]);
+        velocity += number;
+      }
+    deallog << dim << "D: t = " << t << ", steps " << last
+            << ", centre-of-mass velocity" << velocity << std::endl;
     bfemp_tests::check(error < 1e-5,
                        std::to_string(dim) +
                          "D: centre-of-mass velocity = v_0 + g t to 1e-5 m/s");

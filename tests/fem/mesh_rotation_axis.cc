@@ -12,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "tests.h"
 
@@ -51,6 +52,21 @@ namespace
           low[d]  = std::min(low[d], mesh.rest_position(a)[d]);
           high[d] = std::max(high[d], mesh.rest_position(a)[d]);
         }
+    // round-off below the printed digits must not print as -0.000000
+    const auto clean = [](const double v) {
+      return std::abs(v) < 5e-7 ? 0. : v;
+    };
+    char span[160];
+    std::snprintf(span,
+                  sizeof(span),
+                  "nodes span %.6f %.6f %.6f .. %.6f %.6f %.6f",
+                  clean(low[0]),
+                  clean(low[1]),
+                  clean(low[2]),
+                  clean(high[0]),
+                  clean(high[1]),
+                  clean(high[2]));
+    deallog << span << std::endl;
     return std::max(low.distance(lower), high.distance(upper));
   }
 } // namespace
