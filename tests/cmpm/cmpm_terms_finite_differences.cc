@@ -24,6 +24,7 @@
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/solver/mpm_elasticity_term.h>
 
+#include <cstdio>
 #include <iostream>
 #include <tuple>
 
@@ -214,6 +215,16 @@ namespace
     if (dim == 2)
       std::tie(min_eigenvalue, max_eigenvalue) =
         bfemp_tests::eigenvalue_range(bfemp_tests::dense(H));
+    // the sizes the relative errors refer to, at 3 digits (stable); the
+    // round-off dependent errors themselves go to stdout
+    char sizes[160];
+    std::snprintf(sizes,
+                  sizeof(sizes),
+                  "%s: |gradient| %.3g, largest row sum of |H| %.3g",
+                  what.c_str(),
+                  g.l2_norm(),
+                  H.linfty_norm());
+    deallog << sizes << std::endl;
     std::cout << what << ": gradient error " << gradient_error
               << ", Hessian error " << hessian_error << ", eigenvalues ["
               << min_eigenvalue << ", " << max_eigenvalue << "]" << std::endl;
@@ -257,6 +268,9 @@ namespace
         net += DofSpace<dim>::get(g, node);
         largest = std::max(largest, DofSpace<dim>::get(g, node).norm());
       }
+    char force[80];
+    std::snprintf(force, sizeof(force), "largest nodal force %.4g", largest);
+    deallog << name << force << std::endl;
     std::cout << name << "net internal force " << net.norm() << " of "
               << largest << std::endl;
     check(net.norm() < 1e-10 * largest,
