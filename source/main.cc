@@ -50,7 +50,12 @@ namespace
     const auto write = [&](auto dim_constant, const std::string &name) {
       constexpr int    dim = decltype(dim_constant)::value;
       ParameterHandler prm;
-      SceneParameters<dim>::declare_parameters(prm, {1}, 1, 1);
+      // one of each numbered subsection, so that the reference shows them
+      SceneParameters<dim>::declare_parameters(
+        prm,
+        {typename BodyParameters<dim>::Counts{1, 1}},
+        1,
+        1);
       std::ofstream prm_file(folder + "/" + name + ".prm");
       prm.print_parameters(prm_file, ParameterHandler::PRM);
       std::ofstream json_file(folder + "/" + name + ".json");

@@ -1,6 +1,7 @@
 #include <bfemp/cmpm/cmpm_discretization.h>
 #include <bfemp/particles/particle_layout.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bfemp
@@ -57,6 +58,19 @@ namespace bfemp
       if (!first)
         phi.rebuild(element, points);
     });
+    bound = 1.;
+    for (std::size_t e = 0; e < grid.n_elements_total(); ++e)
+      if (phi.is_active(e))
+        bound = std::max(bound, phi.interpolation_bound(e));
+  }
+
+
+
+  template <int dim>
+  double
+  CmpmDiscretization<dim>::interpolation_bound() const
+  {
+    return bound;
   }
 
 

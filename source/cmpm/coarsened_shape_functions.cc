@@ -2,6 +2,9 @@
 
 #include <deal.II/base/parallel.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace bfemp
 {
   template <int dim>
@@ -11,7 +14,42 @@ namespace bfemp
     , psi(grid)
     , condensation(grid, psi)
     , control(grid.n_elements_total())
-  {}
+    , bound(grid.n_elements_total(), 0.)
+  {
+    for (unsigned int k = 0; k < grid.n_fine(); ++k)
+      {
+        double row_sum = 0.;
+        for (const auto &entry : psi.row(k))
+          row_sum += std::abs(entry.second);
+        boundary_bound = std::max(boundary_bound, row_sum);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::build(
+    const std::size_t                             element,
+    const std::vector<LocalQuadraturePoint<dim>> &points)
+  {
+    condensation.compute(points, control[element]);
+    // Fine node k moves by sum_I p_kI Q_I: component a by at most
+    // sum_I sum_c |(p_kI)_ac| |Q|_inf.
+    const unsigned int r       = coarse_grid.n_local_nodes();
+    const auto        &p       = control[element];
+    double             largest = boundary_bound;
+    for (std::size_t i = 0; i * r < p.size(); ++i)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          double row_sum = 0.;
+          for (unsigned int I = 0; I < r; ++I)
+            for (unsigned int c = 0; c < dim; ++c)
+              row_sum += std::abs(p[i * r + I][a][c]);
+          largest = std::max(largest, row_sum);
+        }
+    bound[element] = largest;
+  }
 
 
 
@@ -30,7 +68,7 @@ namespace bfemp
       elements.size(),
       [&](const std::size_t begin, const std::size_t end) {
         for (std::size_t e = begin; e < end; ++e)
-          condensation.compute(points[e], control[elements[e]]);
+          build(elements[e], points[e]);
       },
       1);
   }
@@ -53,7 +91,7 @@ namespace bfemp
     const std::size_t                             element,
     const std::vector<LocalQuadraturePoint<dim>> &points)
   {
-    condensation.compute(points, control[element]);
+    build(element, points);
   }
 
 
@@ -152,6 +190,17 @@ namespace bfemp
   CoarsenedShapeFunctions<dim>::coarse_boundary_map() const
   {
     return psi;
+  }
+
+
+
+  template <int dim>
+  double
+  CoarsenedShapeFunctions<dim>::interpolation_bound(
+    const std::size_t element) const
+  {
+    Assert(is_active(element), ExcInternalError());
+    return bound[element];
   }
 
 

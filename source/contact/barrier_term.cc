@@ -294,23 +294,6 @@ namespace bfemp
 
 
   template <int dim>
-  std::vector<unsigned int>
-  BarrierTerm<dim>::clique(const ParticleContact &contact) const
-  {
-    const auto stencil = contact_geometry.stencil_nodes(contact.particle);
-    std::vector<unsigned int> nodes(stencil.begin(), stencil.end());
-    for (const auto &[s, a] : contact.nodes)
-      {
-        const unsigned int node = contact_geometry.node_dof(s, a);
-        if (node != DofSpace<dim>::invalid)
-          nodes.push_back(node);
-      }
-    return nodes;
-  }
-
-
-
-  template <int dim>
   void
   BarrierTerm<dim>::begin_step(const Vector<double> &u)
   {
@@ -435,29 +418,43 @@ namespace bfemp
 
   template <int dim>
   void
+  BarrierTerm<dim>::chain_rule(const ParticleContact &contact,
+                               ChainRule<dim>        &rule) const
+  {
+    // Eq. 29: the particle (block 0) moves with its stencil, w_iq I or
+    // cMPM's Phi_Iq; FEM node k of the contact (block k + 1) with the
+    // identity; kinematic nodes are no unknowns.
+    rule.clear();
+    contact_geometry.add_particle_stencil(rule, contact.particle, 0);
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      {
+        const unsigned int node =
+          contact_geometry.node_dof(contact.nodes[k].first,
+                                    contact.nodes[k].second);
+        if (node != DofSpace<dim>::invalid)
+          rule.add(node, k + 1, 1.);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   BarrierTerm<dim>::add_gradient(const Vector<double> &u,
                                  Vector<double>       &gradient) const
   {
+    ChainRule<dim> rule;
     for (const ParticleContact &contact : contacts(u))
       {
-        Tensor<1, dim> particle_gradient;
-        for (unsigned int d = 0; d < dim; ++d)
-          particle_gradient[d] = scale * contact.gradient[d];
-        const auto nodes   = contact_geometry.stencil_nodes(contact.particle);
-        const auto weights = contact_geometry.stencil_weights(contact.particle);
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            gradient[dim * nodes[i] + d] += weights[i] * particle_gradient[d];
-        for (unsigned int k = 0; k < contact.nodes.size(); ++k)
-          {
-            const unsigned int node =
-              contact_geometry.node_dof(contact.nodes[k].first,
-                                        contact.nodes[k].second);
-            if (node != DofSpace<dim>::invalid)
-              for (unsigned int d = 0; d < dim; ++d)
-                gradient[dim * node + d] +=
-                  scale * contact.gradient[dim * (k + 1) + d];
-          }
+        chain_rule(contact, rule);
+        rule.add_gradient(
+          [&](const unsigned int block) {
+            Tensor<1, dim> g;
+            for (unsigned int d = 0; d < dim; ++d)
+              g[d] = scale * contact.gradient[dim * block + d];
+            return g;
+          },
+          gradient);
       }
   }
 
@@ -469,62 +466,16 @@ namespace bfemp
                                 SparseMatrix<double> &hessian,
                                 const HessianKind     kind) const
   {
+    ChainRule<dim> rule;
     for (const ParticleContact &contact : contacts(u, kind))
       {
-        // Chain rule of eq. 29: unknown j of the clique maps to local
-        // coordinate block b(j) with factor c(j) (w_iq for grid nodes, 1
-        // for FEM nodes).
-        const auto stencil = contact_geometry.stencil_nodes(contact.particle);
-        const auto weights = contact_geometry.stencil_weights(contact.particle);
-        std::vector<unsigned int> node, block;
-        std::vector<double>       factor;
-        for (unsigned int i = 0; i < stencil.size(); ++i)
-          {
-            node.push_back(stencil[i]);
-            block.push_back(0);
-            factor.push_back(weights[i]);
-          }
-        for (unsigned int k = 0; k < contact.nodes.size(); ++k)
-          {
-            const unsigned int n =
-              contact_geometry.node_dof(contact.nodes[k].first,
-                                        contact.nodes[k].second);
-            if (n == DofSpace<dim>::invalid)
-              continue;
-            node.push_back(n);
-            block.push_back(k + 1);
-            factor.push_back(1.);
-          }
-        // Columns in increasing order, as SparseMatrix::add is fastest with.
-        std::vector<unsigned int> order(node.size());
-        std::iota(order.begin(), order.end(), 0u);
-        std::sort(order.begin(),
-                  order.end(),
-                  [&](const unsigned int a, const unsigned int b) {
-                    return node[a] < node[b];
-                  });
-        const unsigned int                   n_columns = node.size() * dim;
-        std::vector<types::global_dof_index> columns(n_columns);
-        std::vector<double>                  values(n_columns);
-        for (unsigned int j = 0; j < node.size(); ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            columns[dim * j + d] = dim * node[order[j]] + d;
-        for (unsigned int i = 0; i < node.size(); ++i)
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              const unsigned int local_row = dim * block[i] + r;
-              for (unsigned int j = 0; j < node.size(); ++j)
-                for (unsigned int c = 0; c < dim; ++c)
-                  values[dim * j + c] =
-                    scale * factor[i] * factor[order[j]] *
-                    contact.hessian(local_row, dim * block[order[j]] + c);
-              hessian.add(dim * node[i] + r,
-                          n_columns,
-                          columns.data(),
-                          values.data(),
-                          false,
-                          true);
-            }
+        chain_rule(contact, rule);
+        rule.add_hessian(
+          [&](const unsigned int row, const unsigned int column) {
+            return contact.hessian(row, column);
+          },
+          scale,
+          hessian);
       }
   }
 

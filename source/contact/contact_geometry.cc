@@ -41,6 +41,19 @@ namespace bfemp
       return box;
     }
 
+    /**
+     * omega_q of eq. 28: the largest cross-section of a sphere of the
+     * particle's rest volume.
+     */
+    template <int dim>
+    double
+    cross_section_of(const double volume)
+    {
+      return dim == 2 ? 2. * std::sqrt(volume / numbers::PI)
+                      : numbers::PI *
+                          std::pow(3. * volume / (4. * numbers::PI), 2. / 3.);
+    }
+
     /** Squared distance of x to facet f with node positions x_nodes. */
     template <int dim>
     double
@@ -83,11 +96,13 @@ namespace bfemp
     const BackgroundGrid<dim>                        &grid,
     ParticleSystem<dim>                              &particles,
     const std::vector<std::unique_ptr<FemBody<dim>>> &bodies,
-    const DofSpace<dim>                              &dofs)
+    const DofSpace<dim>                              &dofs,
+    const CmpmDiscretization<dim>                    *cmpm)
     : grid(grid)
     , particles(particles)
     , bodies(bodies)
     , dofs(dofs)
+    , cmpm(cmpm)
   {
     for (const auto &body : bodies)
       {
@@ -99,33 +114,49 @@ namespace bfemp
 
 
   template <int dim>
-  template <int degree>
   void
   ContactGeometry<dim>::gather_particles()
   {
-    using Layout = ParticleLayout<dim>;
-    KernelStencil<dim, degree> kernel;
-    stencil_size        = KernelStencil<dim, degree>::n_nodes;
+    using Layout        = ParticleLayout<dim>;
     const std::size_t n = particles.n_particles();
     start_positions.resize(n);
     weights.resize(n);
     body_ids.resize(n);
-    stencil_length.assign(n, 0);
-    stencil_node_list.resize(n * stencil_size);
-    stencil_weight_list.resize(n * stencil_size);
     std::size_t q = 0;
     for (const auto &particle : particles.handler())
       {
         const auto properties = particle.get_properties();
         start_positions[q]    = particle.get_location();
-        const double volume   = properties[Layout::rest_volume];
-        weights[q] =
-          dim == 2
-            ? 2. * std::sqrt(volume / numbers::PI)
-            : numbers::PI * std::pow(3. * volume / (4. * numbers::PI), 2. / 3.);
+        weights[q]  = cross_section_of<dim>(properties[Layout::rest_volume]);
         body_ids[q] = static_cast<unsigned int>(properties[Layout::body_id]);
+        ++q;
+      }
+    // cMPM gathers stencils on demand (gather_stencils)
+    stencil_start.assign(n, no_stencil);
+    stencil_length.assign(n, 0);
+    stencil_node_list.clear();
+    stencil_weight_list.clear();
+    stencil_matrix_list.clear();
+    gathered_region.reset();
+  }
+
+
+
+  template <int dim>
+  template <int degree>
+  void
+  ContactGeometry<dim>::gather_kernel_stencils()
+  {
+    KernelStencil<dim, degree> kernel;
+    constexpr unsigned int stencil_size = KernelStencil<dim, degree>::n_nodes;
+    const std::size_t      n            = start_positions.size();
+    stencil_node_list.resize(n * stencil_size);
+    stencil_weight_list.resize(n * stencil_size);
+    for (std::size_t q = 0; q < n; ++q)
+      {
         kernel.reinit(grid.lattice(), start_positions[q]);
-        unsigned int k = 0;
+        stencil_start[q] = q * stencil_size;
+        unsigned int k   = 0;
         for (unsigned int a = 0; a < stencil_size; ++a)
           {
             const unsigned int node = dofs.grid_node(kernel.node[a]);
@@ -138,8 +169,82 @@ namespace bfemp
             ++k;
           }
         stencil_length[q] = k;
-        ++q;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactGeometry<dim>::gather_stencils(const BoundingBox<dim> &reachable) const
+  {
+    if (cmpm == nullptr)
+      return; // the kernel's stencils are all there
+    if (gathered_region &&
+        gathered_region->point_inside(reachable.get_boundary_points().first) &&
+        gathered_region->point_inside(reachable.get_boundary_points().second))
+      return;
+    // One coarse element more than asked, so that a growing |u| during the
+    // Newton solve does not gather again at every iteration.
+    BoundingBox<dim> region = reachable;
+    if (gathered_region)
+      region.merge_with(*gathered_region);
+    region.extend(cmpm->coarse_grid().element_size());
+
+    std::vector<unsigned int> missing;
+    for (unsigned int q = 0; q < start_positions.size(); ++q)
+      if (stencil_start[q] == no_stencil &&
+          region.point_inside(start_positions[q]))
+        missing.push_back(q);
+    // Phi at each missing particle on threads, appended in particle order
+    // (the lists do not depend on the number of threads).
+    struct Stencil
+    {
+      std::vector<unsigned int>   nodes;
+      std::vector<Tensor<2, dim>> factors;
+    };
+    std::vector<Stencil> stencils(missing.size());
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      missing.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        std::vector<CoarseShapeValue<dim>> values;
+        for (std::size_t k = begin; k < end; ++k)
+          {
+            cmpm->evaluate(start_positions[missing[k]], values);
+            for (const CoarseShapeValue<dim> &value : values)
+              {
+                // as in the kernel's case: nodes left out of the step
+                const unsigned int node = dofs.grid_node(value.node);
+                if (node == DofSpace<dim>::invalid)
+                  continue;
+                stencils[k].nodes.push_back(node);
+                stencils[k].factors.push_back(value.value);
+              }
+          }
+      },
+      64);
+    for (std::size_t k = 0; k < missing.size(); ++k)
+      {
+        stencil_start[missing[k]]  = stencil_node_list.size();
+        stencil_length[missing[k]] = stencils[k].nodes.size();
+        stencil_node_list.insert(stencil_node_list.end(),
+                                 stencils[k].nodes.begin(),
+                                 stencils[k].nodes.end());
+        stencil_matrix_list.insert(stencil_matrix_list.end(),
+                                   stencils[k].factors.begin(),
+                                   stencils[k].factors.end());
+      }
+    gathered_region = region;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactGeometry<dim>::interpolation_bound() const
+  {
+    return cmpm == nullptr ? 1. : cmpm->interpolation_bound();
   }
 
 
@@ -148,9 +253,10 @@ namespace bfemp
   void
   ContactGeometry<dim>::begin_step(const double end_time)
   {
-    if (particles.n_particles() > 0)
+    gather_particles();
+    if (particles.n_particles() > 0 && cmpm == nullptr)
       dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
-        gather_particles<decltype(degree)::value>();
+        gather_kernel_stencils<decltype(degree)::value>();
       });
     node_start.resize(bodies.size());
     node_end.resize(bodies.size());
@@ -215,9 +321,19 @@ namespace bfemp
   ContactGeometry<dim>::particle_interpolation(const unsigned int    q,
                                                const Vector<double> &v) const
   {
+    Assert(stencil_start[q] != no_stencil,
+           ExcMessage("particle_interpolation() of a particle whose cMPM "
+                      "stencil was not gathered"));
     Tensor<1, dim>      result;
-    const unsigned int *node   = &stencil_node_list[q * stencil_size];
-    const double       *weight = &stencil_weight_list[q * stencil_size];
+    const unsigned int *node = &stencil_node_list[stencil_start[q]];
+    if (cmpm != nullptr)
+      {
+        const Tensor<2, dim> *Phi = &stencil_matrix_list[stencil_start[q]];
+        for (unsigned int k = 0; k < stencil_length[q]; ++k)
+          result += Phi[k] * DofSpace<dim>::get(v, node[k]);
+        return result;
+      }
+    const double *weight = &stencil_weight_list[stencil_start[q]];
     for (unsigned int k = 0; k < stencil_length[q]; ++k)
       for (unsigned int d = 0; d < dim; ++d)
         result[d] += weight[k] * v[dim * node[k] + d];
@@ -230,16 +346,29 @@ namespace bfemp
   ArrayView<const unsigned int>
   ContactGeometry<dim>::stencil_nodes(const unsigned int q) const
   {
-    return {&stencil_node_list[q * stencil_size], stencil_length[q]};
+    Assert(stencil_start[q] != no_stencil, ExcInternalError());
+    return {stencil_node_list.data() + stencil_start[q], stencil_length[q]};
   }
 
 
 
   template <int dim>
-  ArrayView<const double>
-  ContactGeometry<dim>::stencil_weights(const unsigned int q) const
+  void
+  ContactGeometry<dim>::add_particle_stencil(ChainRule<dim>    &rule,
+                                             const unsigned int q,
+                                             const unsigned int block) const
   {
-    return {&stencil_weight_list[q * stencil_size], stencil_length[q]};
+    Assert(stencil_start[q] != no_stencil, ExcInternalError());
+    const std::size_t first = stencil_start[q];
+    for (unsigned int k = 0; k < stencil_length[q]; ++k)
+      if (cmpm != nullptr)
+        rule.add(stencil_node_list[first + k],
+                 block,
+                 stencil_matrix_list[first + k]);
+      else
+        rule.add(stencil_node_list[first + k],
+                 block,
+                 stencil_weight_list[first + k]);
   }
 
 
@@ -387,11 +516,14 @@ namespace bfemp
         BoundingBox<dim> everything = boxes[0];
         for (const auto &b : boxes)
           everything.merge_with(b);
-        // |x_q(u) - x_q^n| <= sqrt(dim) max |u_i| (weights >= 0, sum <= 1):
+        // |x_q(u) - x_q^n| <= C sqrt(dim) max |u_i| (interpolation_bound):
         // particles whose start is farther from every facet skip the
         // interpolation.
         const BoundingBox<dim> reachable =
-          inflated(everything, std::sqrt(1. * dim) * u.linfty_norm());
+          inflated(everything,
+                   interpolation_bound() * std::sqrt(1. * dim) *
+                     u.linfty_norm());
+        gather_stencils(reachable);
         const SpatialHash<dim> hash(boxes);
         const double           distance_squared = distance * distance;
 
@@ -483,7 +615,9 @@ namespace bfemp
     // sqrt(dim) (|u|_inf + |p|_inf) of its start (as in near_pairs).
     const BoundingBox<dim> reachable =
       inflated(everything,
-               std::sqrt(1. * dim) * (u.linfty_norm() + p.linfty_norm()));
+               interpolation_bound() * std::sqrt(1. * dim) *
+                 (u.linfty_norm() + p.linfty_norm()));
+    gather_stencils(reachable);
     const SpatialHash<dim> hash(boxes);
 
     struct Result
@@ -600,8 +734,18 @@ namespace bfemp
     if (boxes.empty() || start_positions.empty())
       return containing;
     const SpatialHash<dim> hash(boxes);
+    BoundingBox<dim>       everything = boxes[0];
+    for (const auto &b : boxes)
+      everything.merge_with(b);
+    // as in near_pairs: particles that cannot reach an element
+    const BoundingBox<dim> reachable =
+      inflated(everything,
+               interpolation_bound() * std::sqrt(1. * dim) * u.linfty_norm());
+    gather_stencils(reachable);
 
     const auto containing_body = [&](const unsigned int q) {
+      if (!reachable.point_inside(start_positions[q]))
+        return numbers::invalid_unsigned_int;
       const Point<dim>                       xq = particle_position(q, u);
       thread_local std::vector<unsigned int> candidates;
       hash.query(box_of(xq), candidates);

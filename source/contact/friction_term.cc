@@ -172,23 +172,20 @@ namespace bfemp
 
   template <int dim>
   void
-  FrictionTerm<dim>::stencil(const Pair                &pair,
-                             std::vector<unsigned int> &nodes,
-                             std::vector<double>       &factors) const
+  FrictionTerm<dim>::chain_rule(const Pair &pair, ChainRule<dim> &rule) const
   {
+    // The relative displacement x_q(u) - x_q^n - sum_a w_a (x_a(u) - x_a^n)
+    // is the one block: the particle's stencil with dx_q/du_i, the facet's
+    // deformable nodes with -w_a.
     const ContactGeometry<dim> &geometry = barrier.geometry();
-    const auto stencil_nodes   = geometry.stencil_nodes(pair.particle);
-    const auto stencil_weights = geometry.stencil_weights(pair.particle);
-    nodes.assign(stencil_nodes.begin(), stencil_nodes.end());
-    factors.assign(stencil_weights.begin(), stencil_weights.end());
+    rule.clear();
+    geometry.add_particle_stencil(rule, pair.particle, 0);
     for (unsigned int a = 0; a < dim; ++a)
       {
         const unsigned int node =
           geometry.node_dof(pair.surface, pair.facet_nodes[a]);
-        if (node == DofSpace<dim>::invalid)
-          continue;
-        nodes.push_back(node);
-        factors.push_back(-pair.weights[a]);
+        if (node != DofSpace<dim>::invalid)
+          rule.add(node, 0, -pair.weights[a]);
       }
   }
 
@@ -259,15 +256,12 @@ namespace bfemp
   FrictionTerm<dim>::add_gradient(const Vector<double> &u,
                                   Vector<double>       &gradient) const
   {
-    std::vector<unsigned int> nodes;
-    std::vector<double>       factors;
+    ChainRule<dim> rule;
     for (const Pair &pair : pairs)
       {
         const Tensor<1, dim> force = scale * particle_force(pair, u);
-        stencil(pair, nodes, factors);
-        for (unsigned int j = 0; j < nodes.size(); ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            gradient[dim * nodes[j] + d] += factors[j] * force[d];
+        chain_rule(pair, rule);
+        rule.add_gradient([&](const unsigned int) { return force; }, gradient);
       }
   }
 
@@ -308,11 +302,7 @@ namespace bfemp
                                  SparseMatrix<double> &hessian,
                                  const HessianKind /*kind*/) const
   {
-    std::vector<unsigned int>            nodes;
-    std::vector<double>                  factors;
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    std::vector<unsigned int>            order;
+    ChainRule<dim> rule;
     for (const Pair &pair : pairs)
       {
         const Tensor<1, dim - 1> y    = sliding(pair, u);
@@ -343,35 +333,13 @@ namespace bfemp
             block += M[a][b] * outer_product(pair.basis[a], pair.basis[b]);
         block *= scale * pair.mu_lambda;
 
-        stencil(pair, nodes, factors);
-        // Columns in increasing order, as SparseMatrix::add is fastest with.
-        order.resize(nodes.size());
-        std::iota(order.begin(), order.end(), 0u);
-        std::sort(order.begin(),
-                  order.end(),
-                  [&](const unsigned a, const unsigned b) {
-                    return nodes[a] < nodes[b];
-                  });
-        const unsigned int n_columns = dim * nodes.size();
-        columns.resize(n_columns);
-        values.resize(n_columns);
-        for (unsigned int j = 0; j < nodes.size(); ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            columns[dim * j + d] = dim * nodes[order[j]] + d;
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              for (unsigned int j = 0; j < nodes.size(); ++j)
-                for (unsigned int c = 0; c < dim; ++c)
-                  values[dim * j + c] =
-                    factors[i] * factors[order[j]] * block[r][c];
-              hessian.add(dim * nodes[i] + r,
-                          n_columns,
-                          columns.data(),
-                          values.data(),
-                          false,
-                          true);
-            }
+        chain_rule(pair, rule);
+        rule.add_hessian(
+          [&](const unsigned int row, const unsigned int column) {
+            return block[row][column];
+          },
+          1.,
+          hessian);
       }
   }
 

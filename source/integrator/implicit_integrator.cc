@@ -59,7 +59,8 @@ namespace bfemp
         contact_geometry = std::make_unique<ContactGeometry<dim>>(grid,
                                                                   particles,
                                                                   fem_bodies,
-                                                                  dofs);
+                                                                  dofs,
+                                                                  cmpm);
         barrier          = std::make_unique<BarrierTerm<dim>>(*contact_geometry,
                                                      contact_parameters);
         terms.push_back(barrier.get());

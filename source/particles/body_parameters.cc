@@ -12,8 +12,8 @@ namespace bfemp
 {
   template <int dim>
   void
-  BodyParameters<dim>::declare_parameters(ParameterHandler  &prm,
-                                          const unsigned int n_primitives)
+  BodyParameters<dim>::declare_parameters(ParameterHandler &prm,
+                                          const Counts     &counts)
   {
     using namespace parameter_tools;
     prm.declare_entry("number of primitives",
@@ -46,11 +46,28 @@ namespace bfemp
         "position " +
         (dim == 2 ? "x, y" : "x, y, z") +
         " (and pi), e.g. a rotating disk: -2*(y - 0.5), 2*(x - 0.5)");
+    prm.declare_entry("number of material regions",
+                      "0",
+                      Patterns::Integer(0),
+                      "[-] Number of 'material region k' subsections (k = 0, "
+                      "1, ...): regions of the body with their own material "
+                      "(a heterogeneous body). Each is a primitive (its "
+                      "entries as in 'primitive j') and a 'material' "
+                      "subsection; they apply in order, the last containing "
+                      "a particle wins, and 'operation = subtract' gives the "
+                      "body's own material back inside it.");
     MaterialParameters::declare_parameters(prm);
-    for (unsigned int j = 0; j < n_primitives; ++j)
+    for (unsigned int j = 0; j < counts.primitives; ++j)
       {
         prm.enter_subsection(numbered("primitive", j));
         ShapePrimitive<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    for (unsigned int k = 0; k < counts.regions; ++k)
+      {
+        prm.enter_subsection(numbered("material region", k));
+        ShapePrimitive<dim>::declare_parameters(prm);
+        MaterialParameters::declare_parameters(prm);
         prm.leave_subsection();
       }
   }
@@ -58,10 +75,38 @@ namespace bfemp
 
 
   template <int dim>
-  unsigned int
-  BodyParameters<dim>::parse_number_of_primitives(ParameterHandler &prm)
+  typename BodyParameters<dim>::Counts
+  BodyParameters<dim>::parse_counts(ParameterHandler &prm)
   {
-    return prm.get_integer("number of primitives");
+    Counts counts;
+    counts.primitives = prm.get_integer("number of primitives");
+    counts.regions    = prm.get_integer("number of material regions");
+    return counts;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BodyParameters<dim>::material_index_at(const Point<dim> &x) const
+  {
+    unsigned int index = 0;
+    for (unsigned int k = 0; k < regions.size(); ++k)
+      if (regions[k].shape.contains(x))
+        index = regions[k].shape.subtract ? 0 : k + 1;
+    return index;
+  }
+
+
+
+  template <int dim>
+  std::vector<const MaterialParameters *>
+  BodyParameters<dim>::all_materials() const
+  {
+    std::vector<const MaterialParameters *> result = {&material};
+    for (const MaterialRegion &region : regions)
+      result.push_back(&region.material);
+    return result;
   }
 
 
@@ -164,6 +209,16 @@ namespace bfemp
                   "operation",
                   "subtract",
                   "the first primitive must add material");
+
+    regions.resize(prm.get_integer("number of material regions"));
+    for (unsigned int k = 0; k < regions.size(); ++k)
+      {
+        const std::string name = numbered("material region", k);
+        prm.enter_subsection(name);
+        regions[k].shape.parse_parameters(prm, where + "/" + name);
+        regions[k].material.parse_parameters(prm, where + "/" + name);
+        prm.leave_subsection();
+      }
   }
 
 

@@ -19,11 +19,16 @@ namespace bfemp
     prm.declare_entry("type",
                       "box",
                       Patterns::Selection(
-                        "box|ball|disk|shell|ring|semi-ring|semi-shell"),
-                      "[-] Primitive: box; ball (= disk in 2D); shell (= ring "
-                      "in 2D) between inner and outer radius; semi-ring (= "
-                      "semi-shell) is the half of a shell on the side of "
-                      "'direction'.");
+                        "box|ball|disk|ellipse|ellipsoid|elliptic "
+                        "cylinder|shell|ring|semi-ring|semi-shell"),
+                      "[-] Primitive: box; ball (= disk in 2D); ellipsoid (= "
+                      "ellipse in 2D) with 'semi-axes' along x, y (, z); "
+                      "elliptic cylinder (3D: an ellipse of semi-axes a, b in "
+                      "the x-y plane, half-length c along z; 2D: the "
+                      "ellipse); shell (= ring in 2D) between inner and outer "
+                      "radius; semi-ring (= semi-shell) is the half of a shell "
+                      "on the side of 'direction'. Tilt any of them with "
+                      "'rotation angle'.");
     prm.declare_entry("operation",
                       "add",
                       Patterns::Selection("add|subtract"),
@@ -41,6 +46,11 @@ namespace bfemp
                        "center",
                        components<dim>(0.5, 0.5, 0.5),
                        "[m] Ball, shell, semi-ring: centre");
+    declare_point<dim>(prm,
+                       "semi-axes",
+                       components<dim>(0.1, 0.05, 0.05),
+                       "[m] Ellipsoid, elliptic cylinder: semi-axes a, b (, "
+                       "c) along x, y (, z) before rotation, each > 0");
     prm.declare_entry("inner radius",
                       "0",
                       Patterns::Double(),
@@ -87,8 +97,12 @@ namespace bfemp
   {
     using namespace parameter_tools;
     const std::string name = prm.get("type");
-    type                   = (name == "box")                       ? Type::box
-                             : (name == "ball" || name == "disk")  ? Type::ball
+    type                   = (name == "box")                      ? Type::box
+                             : (name == "ball" || name == "disk") ? Type::ball
+                             : (name == "ellipse" || name == "ellipsoid" ||
+              (name == "elliptic cylinder" && dim == 2))
+                               ? Type::ellipsoid
+                             : (name == "elliptic cylinder") ? Type::elliptic_cylinder
                              : (name == "shell" || name == "ring") ? Type::shell
                                                                    : Type::semi_shell;
     subtract               = prm.get("operation") == "subtract";
@@ -98,6 +112,7 @@ namespace bfemp
     inner_radius           = prm.get_double("inner radius");
     outer_radius           = prm.get_double("outer radius");
     direction              = get_vector<dim>(prm, "direction");
+    semi_axes              = get_point<dim>(prm, "semi-axes");
 
     // the rotation (Rodrigues in 3D) about the pivot
     const double   angle = prm.get_double("rotation angle");
@@ -142,7 +157,14 @@ namespace bfemp
           }
       }
 
-    if (type == Type::box)
+    if (type == Type::ellipsoid || type == Type::elliptic_cylinder)
+      for (unsigned int d = 0; d < dim; ++d)
+        require_input(semi_axes[d] > 0.,
+                      where,
+                      "semi-axes",
+                      to_input_string(semi_axes),
+                      "must be > 0 in every direction [m]");
+    else if (type == Type::box)
       for (unsigned int d = 0; d < dim; ++d)
         require_input(upper_corner[d] > lower_corner[d],
                       where,
@@ -193,6 +215,25 @@ namespace bfemp
           }
         case Type::ball:
           return x.distance(center) - outer_radius;
+        case Type::ellipsoid:
+        case Type::elliptic_cylinder:
+          {
+            // (|A^-1 (x - c)| - 1) min a over the ellipse's axes: its sign
+            // is membership, its size is a length
+            const unsigned int n_axes = type == Type::ellipsoid ? dim : dim - 1;
+            double             r2 = 0., smallest = semi_axes[0];
+            for (unsigned int d = 0; d < n_axes; ++d)
+              {
+                r2 += std::pow((x[d] - center[d]) / semi_axes[d], 2);
+                smallest = std::min(smallest, semi_axes[d]);
+              }
+            double measure = (std::sqrt(r2) - 1.) * smallest;
+            if (type == Type::elliptic_cylinder)
+              measure = std::max(measure,
+                                 std::abs(x[dim - 1] - center[dim - 1]) -
+                                   semi_axes[dim - 1]);
+            return measure;
+          }
         case Type::shell:
         case Type::semi_shell:
           {
@@ -259,11 +300,13 @@ namespace bfemp
   {
     if (type == Type::box)
       return BoundingBox<dim>(std::make_pair(lower_corner, upper_corner));
+    const bool elliptic =
+      type == Type::ellipsoid || type == Type::elliptic_cylinder;
     Point<dim> lower = center, upper = center;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        lower[d] -= outer_radius;
-        upper[d] += outer_radius;
+        lower[d] -= elliptic ? semi_axes[d] : outer_radius;
+        upper[d] += elliptic ? semi_axes[d] : outer_radius;
       }
     return BoundingBox<dim>(std::make_pair(lower, upper));
   }

@@ -218,10 +218,10 @@ namespace bfemp
   template <int dim>
   void
   SceneParameters<dim>::declare_parameters(
-    ParameterHandler                &prm,
-    const std::vector<unsigned int> &primitives_per_body,
-    const unsigned int               n_level_sets,
-    const unsigned int               n_fem_bodies)
+    ParameterHandler                                        &prm,
+    const std::vector<typename BodyParameters<dim>::Counts> &body_counts,
+    const unsigned int                                       n_level_sets,
+    const unsigned int                                       n_fem_bodies)
   {
     declare_dimension(prm);
     prm.declare_entry("number of bodies",
@@ -259,10 +259,10 @@ namespace bfemp
         FemBodyParameters<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
-    for (unsigned int b = 0; b < primitives_per_body.size(); ++b)
+    for (unsigned int b = 0; b < body_counts.size(); ++b)
       {
         prm.enter_subsection(parameter_tools::numbered("body", b));
-        BodyParameters<dim>::declare_parameters(prm, primitives_per_body[b]);
+        BodyParameters<dim>::declare_parameters(prm, body_counts[b]);
         prm.leave_subsection();
       }
   }
@@ -333,7 +333,8 @@ namespace bfemp
   SceneParameters<dim>::check_cmpm() const
   {
     // What cMPM supports so far (doc/cmpm.md, "What is left"): the
-    // implicit integrators, PIC or FLIP, MPM bodies alone.
+    // implicit backward Euler with PIC; FEM bodies take part through the
+    // barrier contact.
     require_input(time.is_implicit() &&
                     time.implicit_scheme().alpha *
                         (1. - 2. * time.implicit_scheme().beta) ==
@@ -352,13 +353,6 @@ namespace bfemp
                                                                       : "FLIP",
                   "cMPM transfers with PIC so far (its inertia is the "
                   "consistent one over the particles)");
-    require_input(fem_bodies.empty(),
-                  "cmpm",
-                  "enabled",
-                  "true",
-                  "cMPM bodies do not take part in barrier contact with FEM "
-                  "bodies yet: use 'number of FEM bodies = 0' or the B-spline "
-                  "grid");
     require_input(!output.write_grid,
                   "output",
                   "write grid",
@@ -375,35 +369,35 @@ namespace bfemp
   {
     file = prm_file;
     // Settle the counts of numbered subsections with lenient passes.
-    std::vector<unsigned int> primitives(1, 1);
-    unsigned int              n_level_sets = 0, n_fem_bodies = 0;
+    using Counts = typename BodyParameters<dim>::Counts;
+    std::vector<Counts> counts(1);
+    unsigned int        n_level_sets = 0, n_fem_bodies = 0;
     for (unsigned int pass = 0;; ++pass)
       {
         ParameterHandler prm;
-        declare_parameters(prm, primitives, n_level_sets, n_fem_bodies);
+        declare_parameters(prm, counts, n_level_sets, n_fem_bodies);
         parse_prm_file(prm, file, true);
-        std::vector<unsigned int> found(prm.get_integer("number of bodies"), 1);
-        for (unsigned int b = 0; b < std::min(found.size(), primitives.size());
-             ++b)
+        std::vector<Counts> found(prm.get_integer("number of bodies"));
+        for (unsigned int b = 0; b < std::min(found.size(), counts.size()); ++b)
           {
             prm.enter_subsection(parameter_tools::numbered("body", b));
-            found[b] = BodyParameters<dim>::parse_number_of_primitives(prm);
+            found[b] = BodyParameters<dim>::parse_counts(prm);
             prm.leave_subsection();
           }
         const unsigned int level_sets =
           GridBoundaries<dim>::parse_number_of_level_sets(prm);
         const unsigned int fem_bodies = prm.get_integer("number of FEM bodies");
-        if (found == primitives && level_sets == n_level_sets &&
+        if (found == counts && level_sets == n_level_sets &&
             fem_bodies == n_fem_bodies)
           break;
-        primitives   = found;
+        counts       = found;
         n_level_sets = level_sets;
         n_fem_bodies = fem_bodies;
         AssertThrow(pass < 3, ExcInternalError());
       }
 
     ParameterHandler prm;
-    declare_parameters(prm, primitives, n_level_sets, n_fem_bodies);
+    declare_parameters(prm, counts, n_level_sets, n_fem_bodies);
     parse_prm_file(prm, file, false);
     // An empty file would run the default body; a user who passed the
     // wrong file should hear of it instead. A scene is what the file says

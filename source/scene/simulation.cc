@@ -27,8 +27,15 @@ namespace bfemp
     if (parameters.run.threads > 0)
       MultithreadInfo::set_thread_limit(parameters.run.threads);
     for (const auto &body : parameters.bodies)
-      materials.push_back(
-        create_material<dim>(body.material.model, body.material.moduli()));
+      {
+        first_material.push_back(materials.size());
+        for (const MaterialParameters *material : body.all_materials())
+          {
+            materials.push_back(
+              create_material<dim>(material->model, material->moduli()));
+            material_densities.push_back(material->density);
+          }
+      }
     create_fem_bodies();
     create_bodies();
     create_integrator();
@@ -213,16 +220,19 @@ namespace bfemp
           BodySampler<dim>(body, grid.lattice()).particle_volume();
         const ArrayView<double> p = make_array_view(properties);
         std::fill(properties.begin(), properties.end(), 0.);
-        p[Layout::mass]        = body.material.density * volume;
         p[Layout::rest_volume] = volume;
 
         Layout::set_tensor(p,
                            Layout::deformation_gradient,
                            unit_symmetric_tensor<dim>());
-        p[Layout::material_id] = b;
-        p[Layout::body_id]     = b;
+        p[Layout::body_id] = b;
         for (const Point<dim> &x : samples[b])
           {
+            // the body's own material or that of its region at x
+            const unsigned int material =
+              first_material[b] + body.material_index_at(x);
+            p[Layout::material_id] = material;
+            p[Layout::mass]        = material_densities[material] * volume;
             const Tensor<1, dim> v = body.initial_velocity_at(x);
             for (unsigned int d = 0; d < dim; ++d)
               if (!std::isfinite(v[d]))
@@ -259,10 +269,9 @@ namespace bfemp
   Simulation<dim>::explicit_time_scale(const double max_speed) const
   {
     double wave_speed = 0.;
-    for (unsigned int b = 0; b < materials.size(); ++b)
-      wave_speed = std::max(wave_speed,
-                            materials[b]->p_wave_speed(
-                              parameters.bodies[b].material.density));
+    for (unsigned int m = 0; m < materials.size(); ++m)
+      wave_speed =
+        std::max(wave_speed, materials[m]->p_wave_speed(material_densities[m]));
     return grid.lattice().dx / (wave_speed + max_speed);
   }
 

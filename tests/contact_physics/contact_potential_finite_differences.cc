@@ -17,8 +17,13 @@
 //    zone): gradient and Hessian vs differences (the Hessian error relative
 //    to max(|H_fd|, |grad D| / sliding), since 2D kinetic friction has
 //    H = 0); its Hessian is PSD without projection.
+// The same checks run with the MPM side discretized by cMPM (seed 002:
+// coarse elements H = 1/8, n = 5, boundary B-spline, L = H), where the
+// chain rule's factors are the matrix-valued Phi_I(x_q) instead of w_iq I
+// (ChainRule): the barrier and friction terms are the same code.
 // Relative errors are printed against stated tolerances.
 
+#include <bfemp/cmpm/cmpm_discretization.h>
 #include <bfemp/contact/barrier_term.h>
 #include <bfemp/contact/contact_geometry.h>
 #include <bfemp/contact/friction_term.h>
@@ -42,8 +47,8 @@ namespace
   {
     using Layout = ParticleLayout<dim>;
 
-    ContactScene(const double dhat)
-      : grid(grid_parameters())
+    ContactScene(const double dhat, const bool with_cmpm)
+      : grid(grid_parameters(with_cmpm))
       , particles(grid)
       , materials(make_materials())
       , transfer(grid, TransferParameters(), materials)
@@ -61,7 +66,7 @@ namespace
       parameters.default_friction_coefficient = 0.5;
       parameters.static_friction_velocity     = 1e-3;
 
-      const double       dx   = grid.lattice().dx;
+      const double       dx   = 1. / 16.; // particles 2 per dx
       const unsigned int n_1d = dim == 2 ? 12 : 6;
       const double       V    = std::pow(0.5 * dx, dim);
       for (unsigned int k = 0; k < std::pow(n_1d, dim); ++k)
@@ -91,11 +96,33 @@ namespace
           particles.insert(x, make_array_view(std::as_const(properties)));
         }
       particles.finish_insertion();
-      state.reinit(grid.lattice().n_nodes);
-      transfer.particles_to_grid(particles, state, false);
+      if (with_cmpm)
+        {
+          CmpmParameters cmpm_parameters;
+          cmpm_parameters.enabled = true;
+          cmpm_parameters.n_fine  = 5;
+          cmpm =
+            std::make_unique<CmpmDiscretization<dim>>(grid, cmpm_parameters);
+          cmpm->reinit(particles, materials);
+          cmpm->particles_to_grid(particles, state);
+          // the activity filter of ImplicitIntegrator for cMPM
+          const double largest =
+            *std::max_element(state.mass.begin(), state.mass.end());
+          for (double &m : state.mass)
+            if (m <= 1e-8 * largest)
+              m = 0.;
+        }
+      else
+        {
+          state.reinit(grid.lattice().n_nodes);
+          transfer.particles_to_grid(particles, state, false);
+        }
       dofs.reinit({bodies[0]->n_nodes()}, state.mass);
-      geometry =
-        std::make_unique<ContactGeometry<dim>>(grid, particles, bodies, dofs);
+      geometry = std::make_unique<ContactGeometry<dim>>(grid,
+                                                        particles,
+                                                        bodies,
+                                                        dofs,
+                                                        cmpm.get());
       geometry->begin_step(0.);
     }
 
@@ -111,7 +138,7 @@ namespace
     }
 
     static GridParameters<dim>
-    grid_parameters()
+    grid_parameters(const bool with_cmpm)
     {
       GridParameters<dim> parameters;
       for (unsigned int d = 0; d < dim; ++d)
@@ -119,7 +146,7 @@ namespace
           parameters.lower_corner[d] = -0.5;
           parameters.upper_corner[d] = 0.5;
         }
-      parameters.cell_size     = 1. / 16.;
+      parameters.cell_size     = with_cmpm ? 1. / 8. : 1. / 16.;
       parameters.kernel_degree = 2;
       return parameters;
     }
@@ -151,6 +178,7 @@ namespace
     GridState<dim>                              state;
     DofSpace<dim>                               dofs;
     ContactParameters                           parameters;
+    std::unique_ptr<CmpmDiscretization<dim>>    cmpm;
     std::unique_ptr<ContactGeometry<dim>>       geometry;
   };
 
@@ -177,11 +205,14 @@ namespace
 
 
 
+  /** "2D" or "2D cMPM": the prefix of a scene's lines. */
+  std::string label;
+
   template <int dim>
   void
   report(const std::string &what, const double error, const double tolerance)
   {
-    deallog << dim << "D " << what << ": "
+    deallog << label << " " << what << ": "
             << (error <= tolerance ? "ok"
                                    : "FAILED (" + std::to_string(error) + ")")
             << " (tolerance " << tolerance << ")" << std::endl;
@@ -191,10 +222,11 @@ namespace
 
   template <int dim>
   void
-  check()
+  check(const bool with_cmpm)
   {
+    label = std::to_string(dim) + "D" + (with_cmpm ? " cMPM" : "");
     const double         dhat = 0.02;
-    ContactScene<dim>    scene(dhat);
+    ContactScene<dim>    scene(dhat, with_cmpm);
     BarrierTerm<dim>     barrier(*scene.geometry, scene.parameters);
     const Vector<double> u = scene.random_displacement(1e-4);
     barrier.begin_step(u);
@@ -203,11 +235,11 @@ namespace
     unsigned int n_facet_terms = 0;
     for (const auto &c : contacts)
       n_facet_terms += c.nodes.size();
-    deallog << dim << "D particles in contact: "
+    deallog << label << " particles in contact: " << contacts.size() << " ("
             << (contacts.size() > (dim == 2 ? 8u : 20u) ? "enough" : "too few")
-            << ", FEM nodes per stencil > " << dim << ": "
-            << (n_facet_terms > dim * contacts.size() ? "yes" : "no")
-            << std::endl;
+            << "), FEM nodes per stencil > " << dim << ": "
+            << (n_facet_terms > dim * contacts.size() ? "yes" : "no") << " ("
+            << n_facet_terms << " in all), unknowns: " << u.size() << std::endl;
 
     const auto value = [&](const Vector<double> &v) {
       return barrier.value(v);
@@ -263,7 +295,7 @@ namespace
         Vector<double> gf(v.size());
         f_gradient(v, gf);
         const std::string zone = sliding > 1e-5 ? "kinetic" : "static";
-        deallog << dim << "D friction pairs: "
+        deallog << label << " friction pairs: "
                 << (friction.n_pairs() > 0 ? "some" : "none") << std::endl;
         report<dim>("friction gradient (" + zone + ")",
                     relative_difference(
@@ -296,6 +328,8 @@ int
 main()
 {
   initlog();
-  check<2>();
-  check<3>();
+  check<2>(false);
+  check<3>(false);
+  check<2>(true);
+  check<3>(true);
 }

@@ -26,29 +26,16 @@
 // normal contact force equals m g cos theta to 1e-6 and every friction
 // step converged.
 
-#include "../implicit/implicit_scene.h"
+#include "slope_scene.h"
 
 using namespace dealii;
 using namespace implicit_scene;
+using namespace slope_scene;
 
 namespace
 {
-  constexpr double g        = 5.1;
-  constexpr double tangent  = 0.2;
   constexpr double end_time = 0.4;
-  constexpr double fem_mass = 0.56 * 0.02 * 1000.;
-
-  double
-  sin_theta()
-  {
-    return tangent / std::sqrt(1. + tangent * tangent);
-  }
-
-  double
-  cos_theta()
-  {
-    return 1. / std::sqrt(1. + tangent * tangent);
-  }
+  constexpr double top      = 0.1;
 
   std::string
   scene(const std::string &name, const double mu)
@@ -59,48 +46,13 @@ namespace
         << "subsection grid\n  set lower corner = 0, 0\n"
            "  set upper corner = 0.6, 0.2\n  set cell size = 0.005\n"
            "  set kernel = quadratic\nend\n"
-           "subsection gravity\n  set acceleration = "
-        << g * sin_theta() << ", " << -g * cos_theta()
-        << "\nend\n"
-           "subsection boundaries\n  set walls = none\nend\n"
-           "subsection contact\n  set activation distance = 1e-3\n"
-           "  set barrier stiffness = 1e6\n"
-           "  set static friction velocity = 1e-5\n"
-           "  set friction coefficient = "
-        << mu << "\nend\n"
+        << physics(mu, top)
         << mpm_box(0,
                    "0.1, 0.1005",
                    "0.2, 0.1205",
                    "0, 0",
-                   material("neo-Hookean", 4e8, 0.2, 100.))
-        << "subsection fem body 0\n  subsection mesh\n"
-           "    set source = rectangle\n"
-           "    set lower corner = 0.02, 0.08\n"
-           "    set upper corner = 0.58, 0.1\n"
-           "    set target edge length = 0.02\n  end\n"
-        << material("neo-Hookean", 1e6, 0.3, 1000.)
-        << "  subsection prescribed motion\n    set nodes = all\n"
-           "    set motion = fixed\n  end\nend\n";
+                   material("neo-Hookean", 4e8, 0.2, 100.));
     return prm.str();
-  }
-
-  /** Least-squares slope of y(t) over t >= t0. */
-  double
-  fitted_slope(const std::vector<double> &t,
-               const std::vector<double> &y,
-               const double               t0)
-  {
-    double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-    for (unsigned int i = 0; i < t.size(); ++i)
-      if (t[i] >= t0)
-        {
-          n += 1;
-          st += t[i];
-          sy += y[i];
-          stt += t[i] * t[i];
-          sty += t[i] * y[i];
-        }
-    return (n * sty - st * sy) / (n * stt - st * st);
   }
 
   void
@@ -118,33 +70,11 @@ namespace
                                               "contact_force_m0_f0_y",
                                               "friction_updates",
                                               "newton_iterations"});
-    const double        block_mass = c[2][0] - fem_mass;
+    const double        block_mass = c[2][0] - slope_mass(top);
     std::vector<double> velocity;
     for (const double p : c[1])
       velocity.push_back(p / block_mass);
-    const double sliding = std::max(0., g * (sin_theta() - mu * cos_theta()));
-    const double acceleration = fitted_slope(c[0], velocity, 0.15);
-
-    if (sliding > 0.)
-      {
-        const double error = std::abs(acceleration - sliding) / sliding;
-        deallog << "mu = " << mu << ": a = " << rounded(acceleration, 5)
-                << " m/s^2, g (sin - mu cos) = " << rounded(sliding, 5)
-                << ", relative error < 1e-3: "
-                << (error < 1e-3 ? "yes" : "NO (" + rounded(error) + ")")
-                << std::endl;
-      }
-    else
-      {
-        // After the start's bounce on the barrier has settled.
-        double largest = 0.;
-        for (unsigned int i = 0; i < velocity.size(); ++i)
-          if (c[0][i] >= 0.15)
-            largest = std::max(largest, std::abs(velocity[i]));
-        deallog << "mu = " << mu << ": sticks, max |v| < 10 eps_v: "
-                << (largest < 1e-4 ? "yes" : "NO (" + rounded(largest) + ")")
-                << std::endl;
-      }
+    check_coulomb(c[0], velocity, mu, 0.15, 1e-3);
     // The normal force at the end carries the block's weight component.
     const double normal = -c[3].back();
     const double weight = block_mass * g * cos_theta();

@@ -20,47 +20,17 @@
 #include <string>
 #include <vector>
 
-#include "../implicit/implicit_scene.h"
+#include "../contact_physics/slope_scene.h"
 
 namespace slope_check
 {
   using namespace dealii;
 
-  constexpr double g       = 5.1;
-  constexpr double tangent = 0.2;
-  constexpr double eps_v   = 1e-5;
-
-  inline double
-  sin_theta()
-  {
-    return tangent / std::sqrt(1. + tangent * tangent);
-  }
-
-  inline double
-  cos_theta()
-  {
-    return 1. / std::sqrt(1. + tangent * tangent);
-  }
-
-  /** Least-squares slope of y(t) over t > t0. */
-  inline double
-  fitted_slope(const std::vector<double> &t,
-               const std::vector<double> &y,
-               const double               t0)
-  {
-    double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-    for (unsigned int i = 0; i < t.size(); ++i)
-      if (t[i] > t0)
-        {
-          const double s = t[i] - t0;
-          n += 1;
-          st += s;
-          sy += y[i];
-          stt += s * s;
-          sty += s * y[i];
-        }
-    return (n * sty - st * sy) / (n * stt - st * st);
-  }
+  using implicit_scene::fitted_slope;
+  using slope_scene::cos_theta;
+  using slope_scene::g;
+  using slope_scene::sin_theta;
+  constexpr double eps_v = 1e-5;
 
   /**
    * Runs @p base_prm (a slope scene) as results/<name> with friction

@@ -208,6 +208,26 @@ namespace implicit_scene
     return out.str();
   }
 
+  /** Least-squares slope of y(t) over t > t0. */
+  inline double
+  fitted_slope(const std::vector<double> &t,
+               const std::vector<double> &y,
+               const double               t0)
+  {
+    double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
+    for (unsigned int i = 0; i < t.size(); ++i)
+      if (t[i] > t0)
+        {
+          const double s = t[i] - t0;
+          n += 1;
+          st += s;
+          sy += y[i];
+          stt += s * s;
+          sty += s * y[i];
+        }
+    return (n * sty - st * sy) / (n * stt - st * st);
+  }
+
   /** Whether every value of @p columns is finite (no NaN, no inf). */
   inline bool
   finite(const std::vector<std::vector<double>> &columns)

@@ -66,6 +66,14 @@ namespace bfemp
     evaluate(const Point<dim>                   &x,
              std::vector<CoarseShapeValue<dim>> &values) const;
 
+    /**
+     * The largest CoarsenedShapeFunctions::interpolation_bound() over the
+     * elements built by the last reinit(): no particle moves farther than
+     * that times sqrt(dim) max_I |u_I|_inf with the coarse nodes.
+     */
+    double
+    interpolation_bound() const;
+
     /** The lattice of the unknowns (coarse nodes). */
     const Lattice<dim> &
     node_lattice() const;
@@ -79,6 +87,7 @@ namespace bfemp
   private:
     CoarseGrid<dim>              grid;
     CoarsenedShapeFunctions<dim> phi;
+    double                       bound = 1.;
   };
 } // namespace bfemp
 

@@ -102,6 +102,15 @@ namespace bfemp
     const CoarseBoundaryMap<dim> &
     coarse_boundary_map() const;
 
+    /**
+     * C of an active element: |u(x)|_inf <= C max_I |Q_I|_inf in the
+     * element, the largest absolute row sum of its fine control matrices
+     * p^alpha (the fine B-splines are nonnegative and sum to one). Contact
+     * uses it to bound how far a particle moves with the coarse nodes.
+     */
+    double
+    interpolation_bound(const std::size_t element) const;
+
     /** p_i of an active element, control[i * r + I] (BoundaryInteriorMap). */
     const std::vector<Tensor<2, dim>> &
     interior_control(const std::size_t element) const;
@@ -111,6 +120,15 @@ namespace bfemp
     CoarseBoundaryMap<dim>                   psi;
     BoundaryInteriorMap<dim>                 condensation;
     std::vector<std::vector<Tensor<2, dim>>> control;
+    /** interpolation_bound() of each element. */
+    std::vector<double> bound;
+    /** The largest absolute row sum of psi over the boundary fine nodes. */
+    double boundary_bound = 0.;
+
+    /** Builds element @p element's control and bound from its particles. */
+    void
+    build(const std::size_t                             element,
+          const std::vector<LocalQuadraturePoint<dim>> &points);
   };
 } // namespace bfemp
 

@@ -29,8 +29,9 @@ namespace bfemp
    * nodes of the primitives within dhat. Its local Hessian (the subtracted
    * terms included, which is what makes them harmless) is projected onto
    * the PSD cone unless the exact Hessian is asked for, then carried to the
-   * unknowns by the chain rule of eq. 29, dx_q/du_i = w_iq I for grid nodes and
-   * the identity for FEM nodes. Kinematic (fully prescribed) FEM bodies
+   * unknowns by the chain rule of eq. 29 (ChainRule), dx_q/du_i = w_iq I for
+   * grid nodes (Phi_iq for cMPM's coarse nodes) and the identity for FEM
+   * nodes. Kinematic (fully prescribed) FEM bodies
    * contribute positions only.
    *
    * The step bound is collision detection along u + t p (ContactGeometry);
@@ -161,9 +162,9 @@ namespace bfemp
              const Vector<double>                           &u,
              const std::optional<HessianKind>               &hessian) const;
 
-    /** Unified nodes of a contact's stencil (grid stencil, then FEM). */
-    std::vector<unsigned int>
-    clique(const ParticleContact &contact) const;
+    /** The unknowns of a contact with the factors of eq. 29. */
+    void
+    chain_rule(const ParticleContact &contact, ChainRule<dim> &rule) const;
 
     ContactGeometry<dim>    &contact_geometry;
     const ContactParameters &parameters;

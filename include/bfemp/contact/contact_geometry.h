@@ -1,6 +1,8 @@
 #ifndef bfemp_contact_contact_geometry_h
 #define bfemp_contact_contact_geometry_h
 
+#include <bfemp/cmpm/cmpm_discretization.h>
+#include <bfemp/contact/chain_rule.h>
 #include <bfemp/contact/contact_surface.h>
 #include <bfemp/fem/fem_body.h>
 #include <bfemp/grid/background_grid.h>
@@ -8,9 +10,12 @@
 #include <bfemp/solver/dof_space.h>
 
 #include <deal.II/base/array_view.h>
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/lac/vector.h>
 
+#include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -23,7 +28,9 @@ namespace bfemp
    *
    * - a particle moves with the grid, x_q(u) = x_q^n + sum_i w_iq u_i, the
    *   same interpolation as the G2P position update, so that dx_q/du_i =
-   *   w_iq I is the chain rule of BFEMP eq. 29;
+   *   w_iq I is the chain rule of BFEMP eq. 29; with cMPM (seed 002) the
+   *   unknowns are coarse nodes and x_q(u) = x_q^n + sum_I Phi_I(x_q^n) u_I,
+   *   dx_q/du_I = Phi_I, the matrix-valued case of the same chain rule;
    * - a node of a deformable FEM body is x_a^n + u_a;
    * - a node of a kinematic FEM body (every node prescribed, Section 4.4)
    *   is no unknown: it follows x_a^n + s (x_a^{n+1} - x_a^n) with the
@@ -67,7 +74,8 @@ namespace bfemp
     ContactGeometry(const BackgroundGrid<dim>                        &grid,
                     ParticleSystem<dim>                              &particles,
                     const std::vector<std::unique_ptr<FemBody<dim>>> &bodies,
-                    const DofSpace<dim>                              &dofs);
+                    const DofSpace<dim>                              &dofs,
+                    const CmpmDiscretization<dim> *cmpm = nullptr);
 
     /**
      * Takes the particles and FEM nodes at the start of the step; kinematic
@@ -93,15 +101,26 @@ namespace bfemp
     Point<dim>
     particle_position(const unsigned int q, const Vector<double> &u) const;
 
-    /** sum_i w_iq v_i: the particle's share of a grid vector. */
+    /** sum_i w_iq v_i (sum_I Phi_Iq v_I with cMPM): the particle's share
+     *  of a grid vector. */
     Tensor<1, dim>
     particle_interpolation(const unsigned int q, const Vector<double> &v) const;
 
+    /**
+     * The unknowns particle @p q moves with. Available for the particles
+     * near_pairs() returned (cMPM gathers the stencils of the particles
+     * that can reach the FEM surfaces only; the B-spline kernel has them
+     * all).
+     */
     ArrayView<const unsigned int>
     stencil_nodes(const unsigned int q) const;
 
-    ArrayView<const double>
-    stencil_weights(const unsigned int q) const;
+    /** Adds particle @p q's unknowns with their factors dx_q/du_i
+     *  (w_iq I or Phi_Iq) to @p rule as block @p block. */
+    void
+    add_particle_stencil(ChainRule<dim>    &rule,
+                         const unsigned int q,
+                         const unsigned int block) const;
 
     /**
      * omega_q of eq. 28: the largest cross-section of a sphere of the
@@ -182,9 +201,33 @@ namespace bfemp
     n_ccd_queries() const;
 
   private:
-    template <int degree>
+    /** The particles' start positions, weights and bodies; no stencils. */
     void
     gather_particles();
+
+    /** The B-spline kernel's stencils of every particle. */
+    template <int degree>
+    void
+    gather_kernel_stencils();
+
+    /**
+     * Makes sure every particle whose start lies in @p reachable has its
+     * stencil. The B-spline kernel's are all there; cMPM gathers Phi at
+     * the particles in the region (and a coarse element around it) on
+     * demand: evaluating Phi costs microseconds per particle, and most
+     * particles of a scene never come near an FEM surface. Called from the
+     * serial start of the queries, never from their threads.
+     */
+    void
+    gather_stencils(const BoundingBox<dim> &reachable) const;
+
+    /**
+     * C such that |x_q(u) - x_q^n| <= C sqrt(dim) |u|_inf for every
+     * particle: 1 for the B-spline kernels (weights >= 0 summing to at most
+     * one), the largest row sum of the fine control matrices for cMPM.
+     */
+    double
+    interpolation_bound() const;
 
     /** For every particle the FEM body with an element containing it at u,
      *  or numbers::invalid_unsigned_int. */
@@ -203,13 +246,25 @@ namespace bfemp
     std::vector<ContactSurface<dim>> surfaces;
     std::vector<bool>                kinematic;
 
-    unsigned int              stencil_size = 0;
-    std::vector<Point<dim>>   start_positions;
-    std::vector<unsigned int> stencil_node_list;
-    std::vector<double>       stencil_weight_list;
-    std::vector<unsigned int> stencil_length;
-    std::vector<double>       weights;
-    std::vector<unsigned int> body_ids;
+    const CmpmDiscretization<dim> *cmpm;
+
+    static constexpr std::size_t no_stencil =
+      std::numeric_limits<std::size_t>::max();
+
+    std::vector<Point<dim>> start_positions;
+    /** Particle q's stencil: entries stencil_start[q] ... + length[q] of
+     *  the lists (no_stencil: not gathered yet). */
+    mutable std::vector<std::size_t>  stencil_start;
+    mutable std::vector<unsigned int> stencil_length;
+    mutable std::vector<unsigned int> stencil_node_list;
+    /** B-spline kernel: w_iq. */
+    std::vector<double> stencil_weight_list;
+    /** cMPM: Phi_Iq. */
+    mutable std::vector<Tensor<2, dim>> stencil_matrix_list;
+    /** cMPM: the region whose particles have their stencils. */
+    mutable std::optional<BoundingBox<dim>> gathered_region;
+    std::vector<double>                     weights;
+    std::vector<unsigned int>               body_ids;
 
     std::vector<std::vector<Point<dim>>> node_start;
     std::vector<std::vector<Point<dim>>> node_end;

@@ -115,11 +115,10 @@ namespace bfemp
     Tensor<1, dim - 1>
     sliding(const Pair &pair, const Vector<double> &u) const;
 
-    /** The pair's unknowns and their factors c of the chain rule. */
+    /** The pair's unknowns and their factors of the chain rule (the
+     *  relative displacement is the one block). */
     void
-    stencil(const Pair                &pair,
-            std::vector<unsigned int> &nodes,
-            std::vector<double>       &factors) const;
+    chain_rule(const Pair &pair, ChainRule<dim> &rule) const;
 
     const BarrierTerm<dim>  &barrier;
     const ContactParameters &parameters;

@@ -16,12 +16,37 @@ namespace bfemp
   /**
    * prm subsection "body i": one MPM body, its shape (a sequence of
    * "primitive j" subsections), how it is sampled with particles, its
-   * initial velocity and its material.
+   * initial velocity and its material. A heterogeneous body assigns other
+   * materials to regions of it ("material region k": a primitive and a
+   * material, applied in order; "subtract" gives the body's own material
+   * back), so that one body carries several materials (cMPM condenses
+   * over them element by element).
    */
   template <int dim>
   struct BodyParameters
   {
+    /** The numbers of numbered subsections (settled by a first pass). */
+    struct Counts
+    {
+      unsigned int primitives = 1;
+      unsigned int regions    = 0;
+
+      bool
+      operator==(const Counts &other) const
+      {
+        return primitives == other.primitives && regions == other.regions;
+      }
+    };
+
+    /** A region of the body with its own material. */
+    struct MaterialRegion
+    {
+      ShapePrimitive<dim> shape;
+      MaterialParameters  material;
+    };
+
     std::vector<ShapePrimitive<dim>> primitives;
+    std::vector<MaterialRegion>      regions;
     unsigned int                     particles_per_direction = 2;
     bool                             jittered                = false;
     unsigned int                     jitter_seed             = 1;
@@ -32,13 +57,24 @@ namespace bfemp
     std::vector<std::string> initial_velocity_expressions;
     MaterialParameters       material;
 
-    /** Declares the entries of a body with @p n_primitives primitives. */
+    /** Declares the entries of a body with @p counts subsections. */
     static void
-    declare_parameters(ParameterHandler &prm, const unsigned int n_primitives);
+    declare_parameters(ParameterHandler &prm, const Counts &counts);
 
-    /** Reads only "number of primitives" (first pass of the reader). */
-    static unsigned int
-    parse_number_of_primitives(ParameterHandler &prm);
+    /** Reads only the counts (first pass of the reader). */
+    static Counts
+    parse_counts(ParameterHandler &prm);
+
+    /**
+     * The material of the body at @p x: 0 for the body's own, k + 1 for
+     * 'material region k' (the last region containing x that adds).
+     */
+    unsigned int
+    material_index_at(const Point<dim> &x) const;
+
+    /** The body's materials: its own, then its regions'. */
+    std::vector<const MaterialParameters *>
+    all_materials() const;
 
     void
     parse_parameters(ParameterHandler &prm, const std::string &where);

@@ -15,11 +15,12 @@ namespace bfemp
 
   /**
    * One primitive of a body's shape, prm subsection "primitive j" of a body:
-   * a box, a ball (disk in 2D), a shell (ring in 2D) or a half shell
-   * (semi-ring). Bodies combine primitives in order: "add" unites, "subtract"
-   * removes. Any primitive may be rotated ("rotation angle", in 3D about
-   * "rotation axis") about its own centre or about a common "rotation
-   * center", which rotates a whole CSG body when its primitives share it.
+   * a box, a ball (disk in 2D), an ellipsoid (ellipse in 2D), an elliptic
+   * cylinder (3D), a shell (ring in 2D) or a half shell (semi-ring). Bodies
+   * combine primitives in order: "add" unites, "subtract" removes. Any
+   * primitive may be rotated ("rotation angle", in 3D about "rotation axis")
+   * about its own centre or about a common "rotation center", which rotates a
+   * whole CSG body when its primitives share it.
    */
   template <int dim>
   struct ShapePrimitive
@@ -28,6 +29,8 @@ namespace bfemp
     {
       box,
       ball,
+      ellipsoid,
+      elliptic_cylinder,
       shell,
       semi_shell
     };
@@ -37,6 +40,9 @@ namespace bfemp
     Point<dim> lower_corner;
     Point<dim> upper_corner;
     Point<dim> center;
+    /** Ellipsoid: semi-axes along x, y (, z); elliptic cylinder (3D): a, b
+     *  of the ellipse in the x-y plane and the half-length along z. */
+    Point<dim> semi_axes;
     double     inner_radius = 0.;
     double     outer_radius = 0.;
     /** The semi-shell keeps the half with (x - center) . direction >= 0. */

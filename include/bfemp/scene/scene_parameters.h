@@ -24,7 +24,8 @@ namespace bfemp
   /**
    * Everything a scene prm file says, one struct per subsection. The file is
    * read in passes: the counts that decide which subsections exist ("number
-   * of bodies", each body's "number of primitives", "number of level sets",
+   * of bodies", each body's "number of primitives" and "number of material
+   * regions", "number of level sets",
    * "number of FEM bodies")
    * are read leniently until they settle, then the whole file is parsed
    * strictly, so any unknown or malformed entry is reported with its line.
@@ -57,10 +58,11 @@ namespace bfemp
 
     /** Declares all entries for the given counts of numbered subsections. */
     static void
-    declare_parameters(ParameterHandler                &prm,
-                       const std::vector<unsigned int> &primitives_per_body,
-                       const unsigned int               n_level_sets,
-                       const unsigned int               n_fem_bodies);
+    declare_parameters(
+      ParameterHandler                                        &prm,
+      const std::vector<typename BodyParameters<dim>::Counts> &body_counts,
+      const unsigned int                                       n_level_sets,
+      const unsigned int                                       n_fem_bodies);
 
     /** Refuses combinations cMPM does not support (cmpm/enabled). */
     void

@@ -164,13 +164,18 @@ namespace bfemp
     void
     print_test_summary(const double time, const StepDiagnostics<dim> &d) const;
 
-    const SceneParameters<dim>                  parameters;
-    const std::string                           parameter_file;
-    std::ostream                               &console;
-    BackgroundGrid<dim>                         grid;
+    const SceneParameters<dim> parameters;
+    const std::string          parameter_file;
+    std::ostream              &console;
+    BackgroundGrid<dim>        grid;
+    /** Every body's materials, its own then its regions' (a particle's
+     *  material id indexes this list), with their densities. */
     std::vector<std::unique_ptr<Material<dim>>> materials;
-    ParticleSystem<dim>                         particle_system;
-    ParticleGridTransfer<dim>                   transfer;
+    std::vector<double>                         material_densities;
+    /** Index in materials of body b's own material. */
+    std::vector<unsigned int> first_material;
+    ParticleSystem<dim>       particle_system;
+    ParticleGridTransfer<dim> transfer;
     /** The substepped integrator's own macro-step transfer, if it has one. */
     std::unique_ptr<ParticleGridTransfer<dim>> macro_transfer;
     /** cMPM's coarse nodes and shape functions (cmpm/enabled). */
