@@ -186,9 +186,15 @@ namespace bfemp
 
   template <int dim>
   void
-  BodyParameters<dim>::parse_parameters(ParameterHandler  &prm,
-                                        const std::string &where)
+  BodyParameters<dim>::parse_parameters(ParameterHandler      &prm,
+                                        const std::string     &where,
+                                        const PrmEntryOrigins *origins)
   {
+    const auto directory = [&](const std::string &subsection) {
+      return origins == nullptr
+               ? std::string()
+               : origins->directory_of({where, subsection}, "image file");
+    };
     using namespace parameter_tools;
     particles_per_direction = prm.get_integer("particles per cell");
     jittered                = prm.get("sampling") == "jittered";
@@ -201,7 +207,8 @@ namespace bfemp
       {
         prm.enter_subsection(numbered("primitive", j));
         primitives[j].parse_parameters(prm,
-                                       where + "/" + numbered("primitive", j));
+                                       where + "/" + numbered("primitive", j),
+                                       directory(numbered("primitive", j)));
         prm.leave_subsection();
       }
     require_input(!primitives[0].subtract,
@@ -215,7 +222,9 @@ namespace bfemp
       {
         const std::string name = numbered("material region", k);
         prm.enter_subsection(name);
-        regions[k].shape.parse_parameters(prm, where + "/" + name);
+        regions[k].shape.parse_parameters(prm,
+                                          where + "/" + name,
+                                          directory(name));
         regions[k].material.parse_parameters(prm, where + "/" + name);
         prm.leave_subsection();
       }

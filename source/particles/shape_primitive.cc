@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <map>
 
 namespace bfemp
 {
@@ -20,15 +22,44 @@ namespace bfemp
                       "box",
                       Patterns::Selection(
                         "box|ball|disk|ellipse|ellipsoid|elliptic "
-                        "cylinder|shell|ring|semi-ring|semi-shell"),
+                        "cylinder|shell|ring|semi-ring|semi-shell|image"),
                       "[-] Primitive: box; ball (= disk in 2D); ellipsoid (= "
                       "ellipse in 2D) with 'semi-axes' along x, y (, z); "
                       "elliptic cylinder (3D: an ellipse of semi-axes a, b in "
                       "the x-y plane, half-length c along z; 2D: the "
                       "ellipse); shell (= ring in 2D) between inner and outer "
                       "radius; semi-ring (= semi-shell) is the half of a shell "
-                      "on the side of 'direction'. Tilt any of them with "
-                      "'rotation angle'.");
+                      "on the side of 'direction'; image: the voxels of "
+                      "'image file' that hold 'image value'. Tilt any of them "
+                      "with 'rotation angle'.");
+    prm.declare_entry("image file",
+                      "",
+                      Patterns::Anything(),
+                      "[-] Image: a legacy VTK file (.vtk, DATASET "
+                      "STRUCTURED_POINTS, ASCII or BINARY, one scalar of "
+                      "type (unsigned) char/short/int, float or double, "
+                      "POINT_DATA or CELL_DATA; 2D: one layer) or a raw file "
+                      "(.raw, unsigned 8-bit, x fastest, with 'image size', "
+                      "'image origin' and 'image spacing'). A relative path "
+                      "is relative to the directory of the prm file that "
+                      "sets it.");
+    prm.declare_entry("image value",
+                      "1",
+                      Patterns::Double(),
+                      "[-] Image: the value (label) of the voxels that belong "
+                      "to the primitive (matched within 1/2).");
+    declare_point<dim>(prm,
+                       "image size",
+                       components<dim>(1, 1, 1),
+                       "[-] Raw image: voxels per direction");
+    declare_point<dim>(prm,
+                       "image origin",
+                       components<dim>(0, 0, 0),
+                       "[m] Raw image: centre of the first voxel");
+    declare_point<dim>(prm,
+                       "image spacing",
+                       components<dim>(1, 1, 1),
+                       "[m] Raw image: voxel size per direction");
     prm.declare_entry("operation",
                       "add",
                       Patterns::Selection("add|subtract"),
@@ -93,26 +124,37 @@ namespace bfemp
   template <int dim>
   void
   ShapePrimitive<dim>::parse_parameters(ParameterHandler  &prm,
-                                        const std::string &where)
+                                        const std::string &where,
+                                        const std::string &prm_directory)
   {
     using namespace parameter_tools;
     const std::string name = prm.get("type");
-    type                   = (name == "box")                      ? Type::box
-                             : (name == "ball" || name == "disk") ? Type::ball
-                             : (name == "ellipse" || name == "ellipsoid" ||
-              (name == "elliptic cylinder" && dim == 2))
-                               ? Type::ellipsoid
-                             : (name == "elliptic cylinder") ? Type::elliptic_cylinder
-                             : (name == "shell" || name == "ring") ? Type::shell
-                                                                   : Type::semi_shell;
-    subtract               = prm.get("operation") == "subtract";
-    lower_corner           = get_point<dim>(prm, "lower corner");
-    upper_corner           = get_point<dim>(prm, "upper corner");
-    center                 = get_point<dim>(prm, "center");
-    inner_radius           = prm.get_double("inner radius");
-    outer_radius           = prm.get_double("outer radius");
-    direction              = get_vector<dim>(prm, "direction");
-    semi_axes              = get_point<dim>(prm, "semi-axes");
+    // the 2D and 3D names of one shape map to one type
+    const std::map<std::string, Type> types = {{"box", Type::box},
+                                               {"ball", Type::ball},
+                                               {"disk", Type::ball},
+                                               {"ellipse", Type::ellipsoid},
+                                               {"ellipsoid", Type::ellipsoid},
+                                               {"elliptic cylinder",
+                                                dim == 2
+                                                  ? Type::ellipsoid
+                                                  : Type::elliptic_cylinder},
+                                               {"shell", Type::shell},
+                                               {"ring", Type::shell},
+                                               {"semi-ring", Type::semi_shell},
+                                               {"semi-shell", Type::semi_shell},
+                                               {"image", Type::image}};
+    type                                    = types.at(name);
+    if (type == Type::image)
+      parse_image(prm, where, prm_directory); // before its pivot is taken
+    subtract     = prm.get("operation") == "subtract";
+    lower_corner = get_point<dim>(prm, "lower corner");
+    upper_corner = get_point<dim>(prm, "upper corner");
+    center       = get_point<dim>(prm, "center");
+    inner_radius = prm.get_double("inner radius");
+    outer_radius = prm.get_double("outer radius");
+    direction    = get_vector<dim>(prm, "direction");
+    semi_axes    = get_point<dim>(prm, "semi-axes");
 
     // the rotation (Rodrigues in 3D) about the pivot
     const double   angle = prm.get_double("rotation angle");
@@ -130,7 +172,8 @@ namespace bfemp
     rotation                     = rotation_matrix<dim>(angle, axis);
     const std::string pivot_text = Utilities::trim(prm.get("rotation center"));
     if (pivot_text.empty())
-      pivot = type == Type::box
+      pivot = type == Type::image ? image_center()
+              : type == Type::box
                 ? Point<dim>(0.5 * (lower_corner + upper_corner))
                 : center;
     else
@@ -198,6 +241,67 @@ namespace bfemp
 
 
   template <int dim>
+  void
+  ShapePrimitive<dim>::parse_image(ParameterHandler  &prm,
+                                   const std::string &where,
+                                   const std::string &prm_directory)
+  {
+    using namespace parameter_tools;
+    const std::string entry = Utilities::trim(prm.get("image file"));
+    require_input(!entry.empty(),
+                  where,
+                  "image file",
+                  "''",
+                  "type = image needs the path of a .vtk or .raw file");
+    std::filesystem::path path(entry);
+    if (path.is_relative() && !prm_directory.empty())
+      path = std::filesystem::path(prm_directory) / path;
+    require_input(std::filesystem::is_regular_file(path),
+                  where,
+                  "image file",
+                  path.string(),
+                  "no such file (a relative path is relative to the directory "
+                  "of the prm file that sets it)");
+    const Point<dim>              size = get_point<dim>(prm, "image size");
+    std::array<unsigned int, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        require_input(size[d] >= 1. && size[d] == std::floor(size[d]),
+                      where,
+                      "image size",
+                      to_input_string(size),
+                      "must be whole numbers >= 1");
+        n[d] = static_cast<unsigned int>(size[d]);
+      }
+    try
+      {
+        image = std::make_shared<const VoxelImage<dim>>(
+          VoxelImage<dim>::read(path.string(),
+                                n,
+                                get_point<dim>(prm, "image origin"),
+                                get_point<dim>(prm, "image spacing")));
+      }
+    catch (const InputError &error)
+      {
+        throw InputError("subsection '" + where +
+                         "', entry 'image file': " + error.what());
+      }
+    image_value = prm.get_double("image value");
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  ShapePrimitive<dim>::image_center() const
+  {
+    const auto corners = image->bounding_box().get_boundary_points();
+    return Point<dim>(0.5 * (corners.first + corners.second));
+  }
+
+
+
+  template <int dim>
   double
   ShapePrimitive<dim>::outside_measure(const Point<dim> &rotated_x) const
   {
@@ -233,6 +337,12 @@ namespace bfemp
                                  std::abs(x[dim - 1] - center[dim - 1]) -
                                    semi_axes[dim - 1]);
             return measure;
+          }
+        case Type::image:
+          {
+            // membership only: -1 inside, 1 outside (NaN outside the image)
+            const double v = image->value(x);
+            return std::abs(v - image_value) < 0.5 ? -1. : 1.;
           }
         case Type::shell:
         case Type::semi_shell:
@@ -300,6 +410,8 @@ namespace bfemp
   {
     if (type == Type::box)
       return BoundingBox<dim>(std::make_pair(lower_corner, upper_corner));
+    if (type == Type::image)
+      return image->bounding_box();
     const bool elliptic =
       type == Type::ellipsoid || type == Type::elliptic_cylinder;
     Point<dim> lower = center, upper = center;

@@ -43,7 +43,7 @@ namespace bfemp
     double
     big_endian_value(const unsigned char *bytes, const std::string &type)
     {
-      unsigned char swapped[8];
+      unsigned char      swapped[8];
       const unsigned int size = type_size(type);
       for (unsigned int b = 0; b < size; ++b)
         swapped[b] = bytes[size - 1 - b];
@@ -60,8 +60,9 @@ namespace bfemp
           std::uint32_t v = 0;
           for (unsigned int b = 0; b < 4; ++b)
             v = (v << 8) | bytes[b];
-          return type == "int" ? static_cast<double>(static_cast<std::int32_t>(v))
-                               : static_cast<double>(v);
+          return type == "int"
+                   ? static_cast<double>(static_cast<std::int32_t>(v))
+                   : static_cast<double>(v);
         }
       if (type == "float")
         {
@@ -111,7 +112,8 @@ namespace bfemp
     std::string format;
     in >> format;
     if (format != "ASCII" && format != "BINARY")
-      fail(file, "the third line must be ASCII or BINARY, not '" + format + "'");
+      fail(file,
+           "the third line must be ASCII or BINARY, not '" + format + "'");
     std::string keyword, dataset;
     in >> keyword >> dataset;
     if (keyword != "DATASET" || dataset != "STRUCTURED_POINTS")
@@ -119,9 +121,9 @@ namespace bfemp
            "only DATASET STRUCTURED_POINTS is read (a regular image), not '" +
              keyword + " " + dataset + "'");
 
-    std::array<unsigned int, 3> dims    = {{0, 0, 0}};
-    std::array<double, 3>       origin3 = {{0., 0., 0.}};
-    std::array<double, 3>       spacing3 = {{1., 1., 1.}};
+    std::array<unsigned int, 3> dims      = {{0, 0, 0}};
+    std::array<double, 3>       origin3   = {{0., 0., 0.}};
+    std::array<double, 3>       spacing3  = {{1., 1., 1.}};
     bool                        cell_data = false;
     std::string                 type;
     while (in >> keyword)
@@ -182,7 +184,7 @@ namespace bfemp
         // cell data: the samples are the cells, centred half a spacing in
         image.n[d]       = cell_data ? dims[d] - 1 : dims[d];
         image.spacing[d] = spacing3[d];
-        image.origin[d] = origin3[d] + (cell_data ? 0.5 * spacing3[d] : 0.);
+        image.origin[d]  = origin3[d] + (cell_data ? 0.5 * spacing3[d] : 0.);
         total *= image.n[d];
       }
 
@@ -232,9 +234,9 @@ namespace bfemp
                "in every direction");
         total *= size[d];
       }
-    image.n       = size;
-    image.origin  = origin;
-    image.spacing = spacing;
+    image.n              = size;
+    image.origin         = origin;
+    image.spacing        = spacing;
     const auto file_size = std::filesystem::file_size(file);
     if (file_size != total)
       fail(file,

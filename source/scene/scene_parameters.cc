@@ -284,18 +284,18 @@ namespace bfemp
     boundaries.parse_parameters(prm);
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    const PrmEntryOrigins origins(file);
     bodies.resize(prm.get_integer("number of bodies"));
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const std::string name = parameter_tools::numbered("body", b);
         prm.enter_subsection(name);
-        bodies[b].parse_parameters(prm, name);
+        bodies[b].parse_parameters(prm, name, &origins);
         prm.leave_subsection();
       }
     solver.parse_parameters(prm);
     contact.parse_parameters(prm);
     fem_bodies.resize(prm.get_integer("number of FEM bodies"));
-    const PrmEntryOrigins origins(file);
     for (unsigned int b = 0; b < fem_bodies.size(); ++b)
       {
         const std::string name = parameter_tools::numbered("fem body", b);

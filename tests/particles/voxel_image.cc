@@ -61,12 +61,12 @@ namespace
   head(const unsigned int dim, const std::string &name)
   {
     std::ostringstream prm;
-    prm << "set dimension = " << dim << "\nsubsection run\n  set name = "
-        << name
+    prm << "set dimension = " << dim
+        << "\nsubsection run\n  set name = " << name
         << "\n  set end time = 1e-5\n  set quiet = true\nend\n"
            "subsection grid\n  set upper corner = "
-        << (dim == 2 ? "0.6, 0.4" : "0.4, 0.4, 0.4") << "\n  set cell size = "
-        << h << "\nend\n";
+        << (dim == 2 ? "0.6, 0.4" : "0.4, 0.4, 0.4")
+        << "\n  set cell size = " << h << "\nend\n";
     return prm.str();
   }
 
@@ -100,7 +100,7 @@ namespace
     for (const auto &particle : simulation.particles().handler())
       {
         const auto p = particle.get_properties();
-        auto &entry  = result[static_cast<unsigned int>(p[Layout::material_id])];
+        auto &entry = result[static_cast<unsigned int>(p[Layout::material_id])];
         entry.first += p[Layout::rest_volume];
         entry.second += p[Layout::mass];
       }
@@ -117,8 +117,8 @@ namespace
     const double density[] = {1000., 3000.};
     for (const auto &[m, volume] : expected)
       {
-        const auto  entry = sampled.count(m) ? sampled.at(m)
-                                             : std::pair<double, double>();
+        const auto entry =
+          sampled.count(m) ? sampled.at(m) : std::pair<double, double>();
         const double error =
           std::max(std::abs(entry.first / volume - 1.),
                    std::abs(entry.second / (density[m] * volume) - 1.));
@@ -140,9 +140,9 @@ namespace
   void
   check_2d_vtk_and_raw()
   {
-    const int      nx = 20, ny = 12;
-    std::ofstream  vtk("labels_2d.vtk");
-    std::ofstream  raw("labels_2d.raw", std::ios::binary);
+    const int     nx = 20, ny = 12;
+    std::ofstream vtk("labels_2d.vtk");
+    std::ofstream raw("labels_2d.raw", std::ios::binary);
     vtk << "# vtk DataFile Version 3.0\nlabels\nASCII\n"
            "DATASET STRUCTURED_POINTS\nDIMENSIONS "
         << nx << ' ' << ny << " 1\nORIGIN 0.11 0.05 0\nSPACING " << h << ' '

@@ -1,6 +1,7 @@
 #ifndef bfemp_particles_body_parameters_h
 #define bfemp_particles_body_parameters_h
 
+#include <bfemp/base/prm_entry_origins.h>
 #include <bfemp/material/material_parameters.h>
 #include <bfemp/particles/shape_primitive.h>
 
@@ -76,8 +77,12 @@ namespace bfemp
     std::vector<const MaterialParameters *>
     all_materials() const;
 
+    /** @p origins resolves relative 'image file' paths (null: the working
+     *  directory). */
     void
-    parse_parameters(ParameterHandler &prm, const std::string &where);
+    parse_parameters(ParameterHandler      &prm,
+                     const std::string     &where,
+                     const PrmEntryOrigins *origins = nullptr);
 
     /**
      * The initial velocity of a particle at @p x: the constant, or the

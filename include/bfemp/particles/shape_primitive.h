@@ -1,12 +1,15 @@
 #ifndef bfemp_particles_shape_primitive_h
 #define bfemp_particles_shape_primitive_h
 
+#include <bfemp/particles/voxel_image.h>
+
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <memory>
 #include <string>
 
 namespace bfemp
@@ -16,7 +19,8 @@ namespace bfemp
   /**
    * One primitive of a body's shape, prm subsection "primitive j" of a body:
    * a box, a ball (disk in 2D), an ellipsoid (ellipse in 2D), an elliptic
-   * cylinder (3D), a shell (ring in 2D) or a half shell (semi-ring). Bodies
+   * cylinder (3D), a shell (ring in 2D), a half shell (semi-ring) or the
+   * voxels of an image that hold one value (type "image", VoxelImage). Bodies
    * combine primitives in order: "add" unites, "subtract" removes. Any
    * primitive may be rotated ("rotation angle", in 3D about "rotation axis")
    * about its own centre or about a common "rotation center", which rotates a
@@ -32,7 +36,8 @@ namespace bfemp
       ellipsoid,
       elliptic_cylinder,
       shell,
-      semi_shell
+      semi_shell,
+      image
     };
 
     Type       type     = Type::box;
@@ -43,8 +48,11 @@ namespace bfemp
     /** Ellipsoid: semi-axes along x, y (, z); elliptic cylinder (3D): a, b
      *  of the ellipse in the x-y plane and the half-length along z. */
     Point<dim> semi_axes;
-    double     inner_radius = 0.;
-    double     outer_radius = 0.;
+    /** Image: the voxel image and the value its voxels must hold. */
+    std::shared_ptr<const VoxelImage<dim>> image;
+    double                                 image_value  = 0.;
+    double                                 inner_radius = 0.;
+    double                                 outer_radius = 0.;
     /** The semi-shell keeps the half with (x - center) . direction >= 0. */
     Tensor<1, dim> direction;
     /** The rotation R applied to the primitive about pivot (identity if
@@ -56,9 +64,12 @@ namespace bfemp
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /** @p where names the subsection path for messages. */
+    /** @p where names the subsection path for messages; a relative 'image
+     *  file' is relative to @p prm_directory (empty: the working directory). */
     void
-    parse_parameters(ParameterHandler &prm, const std::string &where);
+    parse_parameters(ParameterHandler  &prm,
+                     const std::string &where,
+                     const std::string &prm_directory = "");
 
     /** Closed-set membership (points on the surface count as inside). */
     bool
@@ -72,6 +83,16 @@ namespace bfemp
     bounding_box() const;
 
   private:
+    /** Reads the image entries (type image). */
+    void
+    parse_image(ParameterHandler  &prm,
+                const std::string &where,
+                const std::string &prm_directory);
+
+    /** The centre of the image's extent (its default pivot). */
+    Point<dim>
+    image_center() const;
+
     /** The unrotated bounding box. */
     BoundingBox<dim>
     unrotated_bounding_box() const;
