@@ -1,0 +1,227 @@
+#!/usr/bin/python3
+"""The time of a step of cMPM against quadratic B-spline MPM on the fine mesh
+(BSMPM-fine), split as seed 002's Table 3: the unknowns, the time outside the
+Newton solve (cMPM: the shape functions of the step, P2G, G2P; BSMPM: P2G,
+G2P), the assembly of the Newton systems (the integrals over the particles),
+the factorization and solve (CHOLMOD), and the line search.
+
+Two heterogeneous scenes, each run both ways on the same particles:
+  2D  prm/cmpm/beam_2d.prm (a beam with two rows of soft inclusions),
+      cMPM H = 0.1, n = 7 (knot span s = 0.02), against BSMPM-fine with cell
+      0.02 shifted by s/2 (as tests/cmpm/beam_consistency);
+  3D  a beam 1.2 x 0.2 x 0.2 m clamped at both ends with soft ball material
+      regions (E 1e3 in E 1e5), cMPM H = 0.1, n = 7, against BSMPM-fine with
+      cell 0.02.
+Each run takes a few steps of the scene on one thread; the figures are means
+over the steps after the first.
+
+  /usr/bin/python3 benchmarks/cmpm_step_split.py [--build build] [--quick]
+
+writes benchmarks/results/cmpm_step_split.json (see doc/performance.md).
+"""
+
+import argparse
+import csv
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BEAM_2D = os.path.join(ROOT, "prm", "cmpm", "beam_2d.prm")
+
+FINE_2D = """subsection cmpm
+  set enabled = false
+end
+subsection grid
+  set lower corner = -0.11, -0.01
+  set upper corner = 2.51, 0.81
+  set cell size    = 0.02
+  set kernel       = quadratic
+end
+subsection boundaries
+  set wall layers = 10
+end
+subsection body 0
+  set particles per cell = 2
+end
+subsection body 1
+  set particles per cell = 2
+end
+"""
+
+BEAM_3D = """set dimension        = 3
+set number of bodies = 1
+subsection run
+  set name     = cmpm_beam_3d
+  set end time = {end_time}
+end
+subsection grid
+  set lower corner = -0.1, 0, 0
+  set upper corner = 1.3, 0.4, 0.4
+  set cell size    = 0.1
+end
+subsection cmpm
+  set enabled                  = true
+  set coarse element type      = boundary B-spline
+  set coarse node span         = H/2
+  set fine nodes per direction = 7
+end
+subsection time
+  set integrator     = implicit backward Euler
+  set time step mode = fixed
+  set time step      = 0.025
+end
+subsection transfer
+  set scheme = PIC
+end
+subsection gravity
+  set acceleration = 0, -25, 0
+end
+subsection boundaries
+  set walls          = x-, x+
+  set wall condition = sticky
+  set wall layers    = 2
+end
+subsection body 0
+  set particles per cell         = 10
+  set number of material regions = 4
+  subsection primitive 0
+    set type         = box
+    set lower corner = 0, 0.1, 0.1
+    set upper corner = 1.2, 0.3, 0.3
+  end
+  subsection material
+    set model           = neo-Hookean
+    set Young's modulus = 1e5
+    set Poisson's ratio = 0.3
+    set density         = 10
+  end
+{regions}end
+"""
+
+REGION_3D = """  subsection material region {k}
+    set type         = ball
+    set center       = {x}, 0.2, 0.2
+    set outer radius = 0.06
+    subsection material
+      set model           = neo-Hookean
+      set Young's modulus = 1e3
+      set Poisson's ratio = 0.3
+      set density         = 10
+    end
+  end
+"""
+
+FINE_3D = """subsection cmpm
+  set enabled = false
+end
+subsection grid
+  set lower corner = -0.11, -0.01, -0.01
+  set upper corner = 1.31, 0.41, 0.41
+  set cell size    = 0.02
+  set kernel       = quadratic
+end
+subsection boundaries
+  set wall layers = 10
+end
+subsection body 0
+  set particles per cell = 2
+end
+"""
+
+
+def run(build, folder, name, text):
+    """Runs one scene (text) as results/<name> in folder on one thread and
+    returns its diagnostics rows."""
+    prm = os.path.join(folder, name + ".prm")
+    with open(prm, "w") as f:
+        f.write(text)
+        f.write(f"subsection run\n  set name = {name}\n  set quiet = true\n"
+                "  set threads = 1\nend\n"
+                "subsection output\n  set directory = results\n"
+                "  set interval = 100\n  set write particles = false\n"
+                "  set write grid = false\n  set diagnostics interval = 1\nend\n")
+    start = time.time()
+    subprocess.run([os.path.join(build, "bfemp"), prm], cwd=folder, check=True,
+                   stdout=subprocess.DEVNULL)
+    elapsed = time.time() - start
+    with open(os.path.join(folder, "results", name, "diagnostics.csv")) as f:
+        rows = [r for r in csv.DictReader(f)]
+    return rows[1:], elapsed  # row 0 is t = 0
+
+
+def split(rows):
+    """Means per step over the steps after the first."""
+    steps = rows[1:]
+    wall = [float(b["wall_time"]) - float(a["wall_time"])
+            for a, b in zip(rows[:-1], rows[1:])]
+    mean = lambda values: sum(values) / len(values)
+    assembly = mean([float(r["assembly_time"]) for r in steps])
+    factorization = mean([float(r["factorization_time"]) for r in steps])
+    solve = mean([float(r["solve_time"]) for r in steps])
+    line_search = mean([float(r["line_search_time"]) for r in steps])
+    step = mean(wall)
+    return {
+        "unknowns": int(mean([float(r["dofs"]) for r in steps])),
+        "newton_iterations": mean([float(r["newton_iterations"]) for r in steps]),
+        "step_s": step,
+        "outside_newton_s": step - assembly - factorization - solve - line_search,
+        "assembly_s": assembly,
+        "factorization_and_solve_s": factorization + solve,
+        "line_search_s": line_search,
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--quick", action="store_true",
+                        help="2D only, 3 steps (a smoke run)")
+    parser.add_argument("--output",
+                        default=os.path.join(ROOT, "benchmarks", "results",
+                                             "cmpm_step_split.json"))
+    arguments = parser.parse_args()
+
+    steps = 3 if arguments.quick else 6
+    end_time = 0.025 * steps
+    with open(BEAM_2D) as f:
+        beam_2d = f.read() + f"subsection run\n  set end time = {end_time}\nend\n"
+    regions = "".join(REGION_3D.format(k=k, x=0.3 + 0.2 * k) for k in range(4))
+    beam_3d = BEAM_3D.format(end_time=end_time, regions=regions)
+    scenes = [("2d", beam_2d, FINE_2D)]
+    if not arguments.quick:
+        scenes.append(("3d", beam_3d, FINE_3D))
+
+    results = []
+    with tempfile.TemporaryDirectory() as folder:
+        for label, text, fine in scenes:
+            for method, extra in (("cMPM", ""), ("BSMPM-fine", fine)):
+                rows, elapsed = run(arguments.build, folder,
+                                    f"{label}_{method}", text + extra)
+                entry = {"scene": label, "method": method, "steps": len(rows),
+                         "run_s": elapsed}
+                entry.update(split(rows))
+                results.append(entry)
+                print(json.dumps(entry), flush=True)
+
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    with open("/proc/cpuinfo") as f:
+        cpu = next((line.split(":", 1)[1].strip() for line in f
+                    if line.startswith("model name")), platform.processor())
+    os.makedirs(os.path.dirname(arguments.output), exist_ok=True)
+    with open(arguments.output + ".tmp", "w") as f:
+        json.dump({"benchmark": "cmpm_step_split",
+                   "date": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
+                   "commit": commit, "cpu": cpu, "threads": 1,
+                   "quick": arguments.quick, "results": results}, f, indent=1)
+    os.replace(arguments.output + ".tmp", arguments.output)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
