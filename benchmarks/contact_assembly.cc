@@ -509,10 +509,11 @@ namespace
       parameters.material.density        = density;
       if (spec.kinematic)
         {
-          using Motion             = bfemp::PrescribedMotionParameters<dim>;
-          parameters.motion.nodes  = Motion::NodeSelection::all;
-          parameters.motion.motion = Motion::Motion::fixed;
-          parameters.motion.where  = "fem body 0/prescribed motion";
+          using Motion = bfemp::PrescribedMotionParameters<dim>;
+          parameters.motions.resize(1);
+          parameters.motions[0].nodes  = Motion::NodeSelection::all;
+          parameters.motions[0].motion = Motion::Motion::fixed;
+          parameters.motions[0].where  = "fem body 0/prescribed motion";
         }
       return parameters;
     }

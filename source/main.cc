@@ -55,7 +55,7 @@ namespace
         prm,
         {typename BodyParameters<dim>::Counts{1, 1}},
         1,
-        1);
+        {2});
       std::ofstream prm_file(folder + "/" + name + ".prm");
       prm.print_parameters(prm_file, ParameterHandler::PRM);
       std::ofstream json_file(folder + "/" + name + ".json");

@@ -269,7 +269,7 @@ namespace bfemp
             node_end[s].resize(mesh.n_nodes());
             for (unsigned int a = 0; a < mesh.n_nodes(); ++a)
               node_end[s][a] =
-                bodies[s]->motion().position(mesh.rest_position(a), end_time);
+                bodies[s]->motion(a).position(mesh.rest_position(a), end_time);
           }
       }
     progress_from = progress_to = 0.;

@@ -13,8 +13,10 @@ namespace bfemp
     , node_masses(fem_mesh->lumped_masses(rho))
     , x(fem_mesh->rest_positions())
     , v(fem_mesh->n_nodes(), parameters.initial_velocity)
-    , prescribed_motion(parameters.motion)
+    , node_motion(fem_mesh->n_nodes(), numbers::invalid_unsigned_int)
   {
+    for (const auto &motion : parameters.motions)
+      prescribed_motions.emplace_back(motion);
     for (const auto &nodes : fem_mesh->elements())
       {
         typename SimplexElement<dim>::NodePositions rest;
@@ -32,25 +34,45 @@ namespace bfemp
                              "); FEM meshes need elements of positive volume");
           }
       }
-    if (prescribed_motion.active())
+    // Each selection drives its nodes; a later one wins for a node in
+    // several (a clamp and a pull that share a corner).
+    for (unsigned int k = 0; k < prescribed_motions.size(); ++k)
       {
-        for (unsigned int a = 0; a < fem_mesh->n_nodes(); ++a)
-          if (prescribed_motion.selects(fem_mesh->rest_position(a),
-                                        fem_mesh->node_boundary_ids(a)))
-            prescribed.push_back(a);
-        if (prescribed.empty())
-          throw InputError(where +
-                           "/prescribed motion: the node selection "
-                           "('nodes' and its box or boundary id) contains "
-                           "no node of the mesh");
-        // Prescribed nodes start where the motion puts them at t = 0 with
-        // its velocity, so the first step does not jump.
-        for (const unsigned int a : prescribed)
+        const PrescribedMotion<dim> &motion = prescribed_motions[k];
+        const std::string            name   = where + ", subsection '" +
+                                 FemBodyParameters<dim>::motion_subsection(k) +
+                                 "'";
+        if (!motion.active())
           {
-            x[a] = prescribed_motion.position(fem_mesh->rest_position(a), 0.);
-            v[a] = prescribed_motion.velocity(fem_mesh->rest_position(a), 0.);
+            if (k > 0)
+              throw InputError(name +
+                               ", entry 'nodes' = none: every prescribed "
+                               "motion after the first needs a node "
+                               "selection (all, box or boundary id)");
+            continue;
           }
+        bool any = false;
+        for (unsigned int a = 0; a < fem_mesh->n_nodes(); ++a)
+          if (motion.selects(fem_mesh->rest_position(a),
+                             fem_mesh->node_boundary_ids(a)))
+            {
+              node_motion[a] = k;
+              any            = true;
+            }
+        if (!any)
+          throw InputError(name +
+                           ": the node selection ('nodes' and its box or "
+                           "boundary id) contains no node of the mesh");
       }
+    for (unsigned int a = 0; a < fem_mesh->n_nodes(); ++a)
+      if (node_motion[a] != numbers::invalid_unsigned_int)
+        {
+          prescribed.push_back(a);
+          // Prescribed nodes start where the motion puts them at t = 0 with
+          // its velocity, so the first step does not jump.
+          x[a] = motion(a).position(fem_mesh->rest_position(a), 0.);
+          v[a] = motion(a).velocity(fem_mesh->rest_position(a), 0.);
+        }
   }
 
 
@@ -165,9 +187,11 @@ namespace bfemp
 
   template <int dim>
   const PrescribedMotion<dim> &
-  FemBody<dim>::motion() const
+  FemBody<dim>::motion(const unsigned int node) const
   {
-    return prescribed_motion;
+    Assert(node_motion[node] != numbers::invalid_unsigned_int,
+           ExcMessage("motion() of a node that is not prescribed"));
+    return prescribed_motions[node_motion[node]];
   }
 
 

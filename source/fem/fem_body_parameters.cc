@@ -5,7 +5,8 @@ namespace bfemp
 {
   template <int dim>
   void
-  FemBodyParameters<dim>::declare_parameters(ParameterHandler &prm)
+  FemBodyParameters<dim>::declare_parameters(ParameterHandler  &prm,
+                                             const unsigned int n_motions)
   {
     using namespace parameter_tools;
     declare_point<dim>(prm,
@@ -16,9 +17,38 @@ namespace bfemp
     prm.enter_subsection("mesh");
     FemMeshParameters<dim>::declare_parameters(prm);
     prm.leave_subsection();
-    prm.enter_subsection("prescribed motion");
-    PrescribedMotionParameters<dim>::declare_parameters(prm);
-    prm.leave_subsection();
+    prm.declare_entry("number of prescribed motions",
+                      "1",
+                      Patterns::Integer(1),
+                      "[-] Node selections with their own motion: subsection "
+                      "'prescribed motion', then 'prescribed motion 1', ... "
+                      "(e.g. one end clamped, the other pulled). A node in "
+                      "several selections follows the last.");
+    for (unsigned int k = 0; k < n_motions; ++k)
+      {
+        prm.enter_subsection(motion_subsection(k));
+        PrescribedMotionParameters<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FemBodyParameters<dim>::parse_number_of_motions(ParameterHandler &prm)
+  {
+    return prm.get_integer("number of prescribed motions");
+  }
+
+
+
+  template <int dim>
+  std::string
+  FemBodyParameters<dim>::motion_subsection(const unsigned int k)
+  {
+    return k == 0 ? std::string("prescribed motion")
+                  : parameter_tools::numbered("prescribed motion", k);
   }
 
 
@@ -35,9 +65,13 @@ namespace bfemp
     prm.enter_subsection("mesh");
     mesh.parse_parameters(prm, where + "/mesh", prm_directory);
     prm.leave_subsection();
-    prm.enter_subsection("prescribed motion");
-    motion.parse_parameters(prm, where + "/prescribed motion");
-    prm.leave_subsection();
+    motions.resize(prm.get_integer("number of prescribed motions"));
+    for (unsigned int k = 0; k < motions.size(); ++k)
+      {
+        prm.enter_subsection(motion_subsection(k));
+        motions[k].parse_parameters(prm, where + "/" + motion_subsection(k));
+        prm.leave_subsection();
+      }
   }
 
 

@@ -183,8 +183,8 @@ namespace bfemp
             const Point<dim> &X = body.mesh().rest_position(a);
             add(dofs.fem_node(b, a),
                 Tensor<2, dim>(),
-                body.motion().position(X, end_time) - body.positions()[a],
-                body.motion().velocity(X, end_time));
+                body.motion(a).position(X, end_time) - body.positions()[a],
+                body.motion(a).velocity(X, end_time));
           }
       }
     // Grid walls and level sets hold FEM nodes inside them as they hold
@@ -364,9 +364,9 @@ namespace bfemp
           {
             const Point<dim> &X = fem_bodies[b]->mesh().rest_position(a);
             fem_bodies[b]->positions()[a] =
-              fem_bodies[b]->motion().position(X, end_time);
+              fem_bodies[b]->motion(a).position(X, end_time);
             fem_bodies[b]->velocities()[a] =
-              fem_bodies[b]->motion().velocity(X, end_time);
+              fem_bodies[b]->motion(a).velocity(X, end_time);
           }
         else
           {

@@ -221,7 +221,7 @@ namespace bfemp
     ParameterHandler                                        &prm,
     const std::vector<typename BodyParameters<dim>::Counts> &body_counts,
     const unsigned int                                       n_level_sets,
-    const unsigned int                                       n_fem_bodies)
+    const std::vector<unsigned int> &motions_per_fem_body)
   {
     declare_dimension(prm);
     prm.declare_entry("number of bodies",
@@ -253,10 +253,11 @@ namespace bfemp
     CheckpointParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
-    for (unsigned int b = 0; b < n_fem_bodies; ++b)
+    for (unsigned int b = 0; b < motions_per_fem_body.size(); ++b)
       {
         prm.enter_subsection(parameter_tools::numbered("fem body", b));
-        FemBodyParameters<dim>::declare_parameters(prm);
+        FemBodyParameters<dim>::declare_parameters(prm,
+                                                   motions_per_fem_body[b]);
         prm.leave_subsection();
       }
     for (unsigned int b = 0; b < body_counts.size(); ++b)
@@ -370,12 +371,13 @@ namespace bfemp
     file = prm_file;
     // Settle the counts of numbered subsections with lenient passes.
     using Counts = typename BodyParameters<dim>::Counts;
-    std::vector<Counts> counts(1);
-    unsigned int        n_level_sets = 0, n_fem_bodies = 0;
+    std::vector<Counts>       counts(1);
+    unsigned int              n_level_sets = 0;
+    std::vector<unsigned int> fem_motions;
     for (unsigned int pass = 0;; ++pass)
       {
         ParameterHandler prm;
-        declare_parameters(prm, counts, n_level_sets, n_fem_bodies);
+        declare_parameters(prm, counts, n_level_sets, fem_motions);
         parse_prm_file(prm, file, true);
         std::vector<Counts> found(prm.get_integer("number of bodies"));
         for (unsigned int b = 0; b < std::min(found.size(), counts.size()); ++b)
@@ -386,18 +388,29 @@ namespace bfemp
           }
         const unsigned int level_sets =
           GridBoundaries<dim>::parse_number_of_level_sets(prm);
-        const unsigned int fem_bodies = prm.get_integer("number of FEM bodies");
+        std::vector<unsigned int> found_motions(prm.get_integer(
+                                                  "number of FEM bodies"),
+                                                1);
+        for (unsigned int b = 0;
+             b < std::min(found_motions.size(), fem_motions.size());
+             ++b)
+          {
+            prm.enter_subsection(parameter_tools::numbered("fem body", b));
+            found_motions[b] =
+              FemBodyParameters<dim>::parse_number_of_motions(prm);
+            prm.leave_subsection();
+          }
         if (found == counts && level_sets == n_level_sets &&
-            fem_bodies == n_fem_bodies)
+            found_motions == fem_motions)
           break;
         counts       = found;
         n_level_sets = level_sets;
-        n_fem_bodies = fem_bodies;
+        fem_motions  = found_motions;
         AssertThrow(pass < 3, ExcInternalError());
       }
 
     ParameterHandler prm;
-    declare_parameters(prm, counts, n_level_sets, n_fem_bodies);
+    declare_parameters(prm, counts, n_level_sets, fem_motions);
     parse_prm_file(prm, file, false);
     // An empty file would run the default body; a user who passed the
     // wrong file should hear of it instead. A scene is what the file says

@@ -80,19 +80,22 @@ namespace bfemp
     bool
     is_kinematic() const;
 
+    /** The motion that drives prescribed node @p node. */
     const PrescribedMotion<dim> &
-    motion() const;
+    motion(const unsigned int node) const;
 
   private:
-    const double                     rho;
-    std::unique_ptr<FemMesh<dim>>    fem_mesh;
-    std::unique_ptr<Material<dim>>   body_material;
-    std::vector<SimplexElement<dim>> simplex_elements;
-    std::vector<double>              node_masses;
-    std::vector<Point<dim>>          x;
-    std::vector<Tensor<1, dim>>      v;
-    PrescribedMotion<dim>            prescribed_motion;
-    std::vector<unsigned int>        prescribed;
+    const double                       rho;
+    std::unique_ptr<FemMesh<dim>>      fem_mesh;
+    std::unique_ptr<Material<dim>>     body_material;
+    std::vector<SimplexElement<dim>>   simplex_elements;
+    std::vector<double>                node_masses;
+    std::vector<Point<dim>>            x;
+    std::vector<Tensor<1, dim>>        v;
+    std::vector<PrescribedMotion<dim>> prescribed_motions;
+    std::vector<unsigned int>          prescribed;
+    /** Index into prescribed_motions of every node (invalid: free). */
+    std::vector<unsigned int> node_motion;
   };
 } // namespace bfemp
 

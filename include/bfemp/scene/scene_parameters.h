@@ -62,7 +62,7 @@ namespace bfemp
       ParameterHandler                                        &prm,
       const std::vector<typename BodyParameters<dim>::Counts> &body_counts,
       const unsigned int                                       n_level_sets,
-      const unsigned int                                       n_fem_bodies);
+      const std::vector<unsigned int> &motions_per_fem_body);
 
     /** Refuses combinations cMPM does not support (cmpm/enabled). */
     void
