@@ -3,6 +3,12 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
 
 namespace bfemp
 {
@@ -144,31 +150,33 @@ namespace bfemp
 
 
   template <int dim>
-  void
-  BoundaryInteriorMap<dim>::compute(
-    const std::vector<LocalQuadraturePoint<dim>> &points,
-    std::vector<Tensor<2, dim>>                  &control) const
+  double
+  BoundaryInteriorMap<dim>::fictitious_weight(
+    const std::vector<LocalQuadraturePoint<dim>> &points) const
   {
-    const unsigned int n_i = grid.n_interior_fine();
-    const unsigned int r   = grid.n_local_nodes();
-    FullMatrix<double> K_i(dim * n_i, dim * n_i), R(dim * n_i, dim * r);
-
     double volume = 0., stiffness = 0.;
     for (const LocalQuadraturePoint<dim> &point : points)
       {
-        add_point(point, K_i, R);
         volume += point.weight;
         stiffness += point.weight * stiffness_scale(point.tangent);
       }
-    // the fictitious material: eps times the mean particle stiffness, or
+    // eps times the mean particle stiffness, or the fictitious material
     // alone (unit stiffness) in an element without particles
-    const double fictitious =
-      volume > 0. ? grid.parameters().empty_span_stiffness * stiffness / volume
-                  : 1.;
-    K_i.add(fictitious, fictitious_K_i);
-    R.add(fictitious, fictitious_R);
+    return volume > 0.
+             ? grid.parameters().empty_span_stiffness * stiffness / volume
+             : 1.;
+  }
 
-    // eq. 30 for every coarse column at once: K_i X = -K_ib Psi_b
+
+
+  template <int dim>
+  void
+  BoundaryInteriorMap<dim>::condense(const FullMatrix<double>    &K_i,
+                                     const FullMatrix<double>    &R,
+                                     std::vector<Tensor<2, dim>> &control) const
+  {
+    const unsigned int       n_i = grid.n_interior_fine();
+    const unsigned int       r   = grid.n_local_nodes();
     LAPACKFullMatrix<double> K(dim * n_i, dim * n_i);
     K = K_i;
     K.set_property(LAPACKSupport::symmetric);
@@ -194,6 +202,215 @@ namespace bfemp
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int c = 0; c < dim; ++c)
             control[i * r + I][a][c] = -X(dim * i + a, dim * I + c);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryInteriorMap<dim>::compute(
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    std::vector<Tensor<2, dim>>                  &control) const
+  {
+    const unsigned int n_i = grid.n_interior_fine();
+    const unsigned int r   = grid.n_local_nodes();
+    FullMatrix<double> K_i(dim * n_i, dim * n_i), R(dim * n_i, dim * r);
+    for (const LocalQuadraturePoint<dim> &point : points)
+      add_point(point, K_i, R);
+    const double fictitious = fictitious_weight(points);
+    K_i.add(fictitious, fictitious_K_i);
+    R.add(fictitious, fictitious_R);
+    condense(K_i, R, control);
+  }
+
+
+
+  template <int dim>
+  LocalSolveStatistics
+  BoundaryInteriorMap<dim>::compute_at_equilibrium(
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    const std::vector<Tensor<1, dim>>            &coarse_displacement,
+    std::vector<Tensor<2, dim>>                  &control) const
+  {
+    constexpr unsigned int n_stencil = CoarseGrid<dim>::n_stencil;
+    const unsigned int     n_i       = grid.n_interior_fine();
+    const unsigned int     r         = grid.n_local_nodes();
+    AssertDimension(coarse_displacement.size(), r);
+    Assert(std::all_of(points.begin(),
+                       points.end(),
+                       [](const auto &point) {
+                         return point.material != nullptr;
+                       }),
+           ExcInternalError());
+
+    // The start: the first Newton step, q_i = p_i Q (eq. 30).
+    compute(points, control);
+    const double fictitious = fictitious_weight(points);
+
+    // Q as a vector, for the fictitious material's K_ib Psi_b Q
+    Vector<double> Q(dim * r);
+    for (unsigned int I = 0; I < r; ++I)
+      for (unsigned int c = 0; c < dim; ++c)
+        Q(dim * I + c) = coarse_displacement[I][c];
+    Vector<double> fictitious_load(dim * n_i);
+    fictitious_R.vmult(fictitious_load, Q);
+    fictitious_load *= fictitious;
+
+    // Every fine node's displacement: boundary ones are q_b = Psi_b Q and
+    // stay; interior ones are the unknowns.
+    std::vector<Tensor<1, dim>> q(grid.n_fine());
+    for (unsigned int k = 0; k < grid.n_fine(); ++k)
+      if (grid.interior_index(k) < 0)
+        for (const auto &[I, weight] : psi.row(k))
+          q[k] += weight * coarse_displacement[I];
+    Vector<double> x(dim * n_i);
+    for (unsigned int i = 0; i < n_i; ++i)
+      for (unsigned int I = 0; I < r; ++I)
+        {
+          const Tensor<1, dim> qi = control[i * r + I] * coarse_displacement[I];
+          for (unsigned int a = 0; a < dim; ++a)
+            x(dim * i + a) += qi[a];
+        }
+
+    // dF_p/dq_k = e_a (x) g_k, g_k = F_p^n^T grad B_k (BFEMP eq. 25), so
+    // F_p(q) = F_p^n + sum_k q_k (x) g_k.
+    struct PointStencil
+    {
+      unsigned int   node[n_stencil];
+      Tensor<1, dim> g[n_stencil];
+    };
+    std::vector<PointStencil> stencils(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        typename CoarseGrid<dim>::FineStencil stencil;
+        grid.fine_stencil(points[p].position, stencil);
+        const Tensor<2, dim> F_T = transpose(points[p].deformation_gradient);
+        for (unsigned int k = 0; k < n_stencil; ++k)
+          {
+            stencils[p].node[k] = stencil.node[k];
+            stencils[p].g[k]    = F_T * stencil.gradient[k];
+          }
+      }
+    auto set_interior = [&](const Vector<double> &values) {
+      for (unsigned int i = 0; i < n_i; ++i)
+        for (unsigned int a = 0; a < dim; ++a)
+          q[grid.interior_fine_node(i)][a] = values(dim * i + a);
+    };
+    auto deformation_gradient = [&](const unsigned int p) {
+      Tensor<2, dim> F = points[p].deformation_gradient;
+      for (unsigned int k = 0; k < n_stencil; ++k)
+        F += outer_product(q[stencils[p].node[k]], stencils[p].g[k]);
+      return F;
+    };
+    // The local potential: the particles' strain energy and the fictitious
+    // material's, 1/2 x K_f x + x K_f,ib q_b; +infinity where a particle
+    // would invert (the det F filter of BFEMP's line search).
+    auto energy = [&](const Vector<double> &values) {
+      set_interior(values);
+      double E = 0.;
+      for (unsigned int p = 0; p < points.size(); ++p)
+        {
+          const Tensor<2, dim> F = deformation_gradient(p);
+          if (!(determinant(F) > 0.))
+            return std::numeric_limits<double>::infinity();
+          E += points[p].weight * points[p].material->energy_density(F);
+        }
+      Vector<double> Kx(dim * n_i);
+      fictitious_K_i.vmult(Kx, values);
+      return E + fictitious * (0.5 * (Kx * values)) + fictitious_load * values;
+    };
+
+    LocalSolveStatistics statistics;
+    statistics.first_step_energy = energy(x);
+    if (!std::isfinite(statistics.first_step_energy))
+      throw SimulationError("cmpm/local solve = full Newton: a particle "
+                            "is inverted (det F <= 0) at the first "
+                            "Newton step's state of its coarse element");
+    // Converged when the Newton step moves no fine node farther than
+    // 1e-10 knot spans (the length scale of the local problem).
+    const double       tolerance      = 1e-10 * grid.knot_span();
+    const unsigned int max_iterations = 50;
+    double             E              = statistics.first_step_energy;
+    for (;; ++statistics.iterations)
+      {
+        if (statistics.iterations == max_iterations)
+          throw SimulationError(
+            "cmpm/local solve = full Newton: the local equilibrium "
+            "of a coarse element did not converge in " +
+            std::to_string(max_iterations) +
+            " Newton iterations; use 'first Newton step' or "
+            "smaller time steps");
+        // gradient f_i and tangent K_i at the current state
+        set_interior(x);
+        FullMatrix<double> K_i(dim * n_i, dim * n_i), R(dim * n_i, dim * r);
+        Vector<double>     gradient(dim * n_i);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            const Tensor<2, dim>      F       = deformation_gradient(p);
+            LocalQuadraturePoint<dim> current = points[p];
+            current.tangent = points[p].material->tangent(F, true);
+            add_point(current, K_i, R);
+            const Tensor<2, dim> P =
+              points[p].material->first_piola_kirchhoff(F);
+            for (unsigned int k = 0; k < n_stencil; ++k)
+              {
+                const int i = grid.interior_index(stencils[p].node[k]);
+                if (i < 0)
+                  continue;
+                const Tensor<1, dim> f =
+                  points[p].weight * (P * stencils[p].g[k]);
+                for (unsigned int a = 0; a < dim; ++a)
+                  gradient(dim * i + a) += f[a];
+              }
+          }
+        {
+          Vector<double> Kx(dim * n_i);
+          fictitious_K_i.vmult(Kx, x);
+          gradient.add(fictitious, Kx);
+        }
+        gradient += fictitious_load;
+        K_i.add(fictitious, fictitious_K_i);
+        R.add(fictitious, fictitious_R);
+        statistics.residual = gradient.linfty_norm();
+
+        LAPACKFullMatrix<double> K(dim * n_i, dim * n_i);
+        K = K_i;
+        K.set_property(LAPACKSupport::symmetric);
+        K.compute_cholesky_factorization();
+        Vector<double> step(gradient);
+        K.solve(step);
+        step *= -1.;
+        if (step.linfty_norm() <= tolerance)
+          {
+            // eq. 30 with the tangent at the equilibrium
+            condense(K_i, R, control);
+            statistics.energy = E;
+            return statistics;
+          }
+        // backtracking on the local energy, det F > 0 kept
+        double         alpha = 1.;
+        Vector<double> trial(x);
+        for (unsigned int halvings = 0;; ++halvings)
+          {
+            trial = x;
+            trial.add(alpha, step);
+            const double E_trial = energy(trial);
+            if (E_trial <= E + 1e-14 * std::abs(E) ||
+                (std::isfinite(E_trial) &&
+                 alpha * step.linfty_norm() <= tolerance))
+              {
+                x = trial;
+                E = E_trial;
+                break;
+              }
+            if (halvings == 60)
+              throw SimulationError(
+                "cmpm/local solve = full Newton: the line search "
+                "of a coarse element's local equilibrium found no "
+                "decrease of its strain energy");
+            alpha *= 0.5;
+          }
+      }
   }
 
 

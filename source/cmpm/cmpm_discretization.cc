@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 namespace bfemp
 {
@@ -23,15 +24,19 @@ namespace bfemp
   void
   CmpmDiscretization<dim>::reinit(
     ParticleSystem<dim>                               &particles,
-    const std::vector<std::unique_ptr<Material<dim>>> &materials)
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<Tensor<1, dim>>                 *coarse_displacement)
   {
     using Layout = ParticleLayout<dim>;
     phi.clear();
+    max_local_iterations = 0;
+    std::mutex iterations_mutex;
     // Each cell of the particle system is one coarse element; elements are
     // independent, so the cell loop's threads rebuild them side by side.
     particles.for_each_cell_scattering([&](const auto &cell_particles) {
       std::vector<LocalQuadraturePoint<dim>> points;
       std::size_t                            element = 0;
+      std::array<int, dim>                   index;
       Point<dim>                             corner;
       bool                                   first = true;
       for (const auto &particle : cell_particles)
@@ -39,10 +44,10 @@ namespace bfemp
           const Point<dim> x = particle.get_location();
           if (first)
             {
-              const auto index = grid.element_of(x);
-              element          = grid.element_index(index);
-              corner           = grid.element_origin(index);
-              first            = false;
+              index   = grid.element_of(x);
+              element = grid.element_index(index);
+              corner  = grid.element_origin(index);
+              first   = false;
             }
           const auto                p = particle.get_properties();
           LocalQuadraturePoint<dim> point;
@@ -50,18 +55,50 @@ namespace bfemp
           point.weight   = p[Layout::rest_volume];
           point.deformation_gradient =
             Layout::get_tensor(p, Layout::deformation_gradient);
+          point.material =
+            materials[static_cast<unsigned int>(p[Layout::material_id])].get();
           point.tangent =
-            materials[static_cast<unsigned int>(p[Layout::material_id])]
-              ->tangent(point.deformation_gradient, true);
+            point.material->tangent(point.deformation_gradient, true);
           points.push_back(point);
         }
-      if (!first)
-        phi.rebuild(element, points);
+      if (first)
+        return;
+      if (coarse_displacement == nullptr)
+        {
+          phi.rebuild(element, points);
+          return;
+        }
+      std::vector<Tensor<1, dim>> local(grid.n_local_nodes());
+      for (unsigned int I = 0; I < local.size(); ++I)
+        local[I] = (*coarse_displacement)[grid.global_node(index, I)];
+      const unsigned int iterations =
+        phi.rebuild_at_equilibrium(element, points, local).iterations;
+      std::lock_guard<std::mutex> lock(iterations_mutex);
+      max_local_iterations = std::max(max_local_iterations, iterations);
     });
     bound = 1.;
     for (std::size_t e = 0; e < grid.n_elements_total(); ++e)
       if (phi.is_active(e))
         bound = std::max(bound, phi.interpolation_bound(e));
+  }
+
+
+
+  template <int dim>
+  bool
+  CmpmDiscretization<dim>::full_newton() const
+  {
+    return grid.parameters().local_solve ==
+           CmpmParameters::LocalSolve::full_newton;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CmpmDiscretization<dim>::local_iterations() const
+  {
+    return max_local_iterations;
   }
 
 

@@ -41,6 +41,16 @@ namespace bfemp
                       "stiffness: keeps the local condensation solvable where "
                       "spans hold no particle (seed 002 Remark 4) without "
                       "breaking the partition of unity. In [0, 1e-2].");
+    prm.declare_entry(
+      "local solve",
+      "first Newton step",
+      Patterns::Selection("first Newton step|full Newton"),
+      "[-] Local equilibrium behind the boundary-interior map (seed 002 "
+      "Sections 5.2, 8.1.4): one Newton step from the step's start with the "
+      "particles' tangent at F^n (eq. 30, the seed's default), or the local "
+      "equilibrium solved to convergence under the coarse displacement a "
+      "first pass of the step reached, M from the tangent there and the step "
+      "solved again (about twice the cost).");
     prm.leave_subsection();
   }
 
@@ -58,6 +68,9 @@ namespace bfemp
     nodes_per_span         = prm.get("coarse node span") == "H" ? 1 : 2;
     const long n           = prm.get_integer("fine nodes per direction");
     empty_span_stiffness   = prm.get_double("empty span stiffness");
+    local_solve            = prm.get("local solve") == "full Newton"
+                               ? LocalSolve::full_newton
+                               : LocalSolve::first_newton_step;
     prm.leave_subsection();
 
     require_input(n >= 5 && n <= 32,

@@ -34,6 +34,15 @@ namespace bfemp
     const std::vector<LocalQuadraturePoint<dim>> &points)
   {
     condensation.compute(points, control[element]);
+    update_bound(element);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::update_bound(const std::size_t element)
+  {
     // Fine node k moves by sum_I p_kI Q_I: component a by at most
     // sum_I sum_c |(p_kI)_ac| |Q|_inf.
     const unsigned int r       = coarse_grid.n_local_nodes();
@@ -92,6 +101,23 @@ namespace bfemp
     const std::vector<LocalQuadraturePoint<dim>> &points)
   {
     build(element, points);
+  }
+
+
+
+  template <int dim>
+  LocalSolveStatistics
+  CoarsenedShapeFunctions<dim>::rebuild_at_equilibrium(
+    const std::size_t                             element,
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    const std::vector<Tensor<1, dim>>            &coarse_displacement)
+  {
+    const LocalSolveStatistics statistics =
+      condensation.compute_at_equilibrium(points,
+                                          coarse_displacement,
+                                          control[element]);
+    update_bound(element);
+    return statistics;
   }
 
 

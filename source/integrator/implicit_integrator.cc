@@ -79,13 +79,14 @@ namespace bfemp
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::particles_to_grid()
+  ImplicitIntegrator<dim>::particles_to_grid(
+    const std::vector<Tensor<1, dim>> *coarse_displacement)
   {
     if (cmpm)
       {
         // seed 002 Fig. 17: the shape functions of this step's particle
         // distribution, then P2G through them
-        cmpm->reinit(particles, materials);
+        cmpm->reinit(particles, materials, coarse_displacement);
         cmpm->particles_to_grid(particles, state);
       }
     else
@@ -484,51 +485,75 @@ namespace bfemp
     if (with_friction)
       friction->set_scale(scale, dt);
 
-    if (with_mpm)
-      particles_to_grid();
-    if (with_mpm && substepped_mpm)
+    // cMPM's `full Newton` local solve (seed 002 Section 8.1.4) solves the
+    // step twice: the second pass's shape functions come from the local
+    // equilibrium at the coarse displacement the first pass reached.
+    const unsigned int          passes = cmpm && cmpm->full_newton() ? 2 : 1;
+    std::vector<Tensor<1, dim>> first_pass_displacement;
+    NewtonStatistics            first_pass_statistics;
+    Vector<double>              u, acceleration, predicted;
+    for (unsigned int pass = 0; pass < passes; ++pass)
       {
-        substepped_mpm->substep_and_reconstruct(dt, time, substeps, state);
-        constant_force_ratio = substepped_mpm->constant_force_ratio(substeps);
-      }
-    number_unknowns();
-    constrain(dt, time + dt);
-    if (with_contact)
-      contact_geometry->begin_step(time + dt);
-    const Vector<double> acceleration = start_acceleration();
-    const Vector<double> predicted    = predictor(acceleration, dt);
-    if (cmpm_inertia)
-      {
-        // cMPM's inertia is the consistent one over the particles. Coarse
-        // nodes whose shape functions the particles see only in combination
-        // leave it singular (combinations that vanish at every particle);
-        // a lumped nodal inertia 1e-8 times the nodes' marks keeps the
-        // Newton matrix definite and moves such combinations with the
-        // body. It changes the momentum by at most 1e-8 of the step's.
-        std::vector<double> regularization(node_mass);
-        for (double &m : regularization)
-          m *= 1e-8;
-        inertia.reinit(regularization, predicted);
-        cmpm_inertia->reinit(dt, scale, gravity);
-      }
-    else
-      inertia.reinit(node_mass, predicted);
-    if (with_mpm && substepped_mpm)
-      mpm_correction_elasticity.set_reference(predicted);
+        if (with_mpm)
+          particles_to_grid(pass == 0 ? nullptr : &first_pass_displacement);
+        if (with_mpm && substepped_mpm)
+          {
+            substepped_mpm->substep_and_reconstruct(dt, time, substeps, state);
+            constant_force_ratio =
+              substepped_mpm->constant_force_ratio(substeps);
+          }
+        number_unknowns();
+        constrain(dt, time + dt);
+        if (with_contact)
+          contact_geometry->begin_step(time + dt);
+        acceleration = start_acceleration();
+        predicted    = predictor(acceleration, dt);
+        if (cmpm_inertia)
+          {
+            // cMPM's inertia is the consistent one over the particles.
+            // Coarse nodes whose shape functions the particles see only in
+            // combination leave it singular (combinations that vanish at
+            // every particle); a lumped nodal inertia 1e-8 times the nodes'
+            // marks keeps the Newton matrix definite and moves such
+            // combinations with the body. It changes the momentum by at
+            // most 1e-8 of the step's.
+            std::vector<double> regularization(node_mass);
+            for (double &m : regularization)
+              m *= 1e-8;
+            inertia.reinit(regularization, predicted);
+            cmpm_inertia->reinit(dt, scale, gravity);
+          }
+        else
+          inertia.reinit(node_mass, predicted);
+        if (with_mpm && substepped_mpm)
+          mpm_correction_elasticity.set_reference(predicted);
 
-    // Algorithm 1 lines 3, 5: start from x^n, friction lagged there. The
-    // Newton solver moves constrained nodes and obstacles onto their
-    // targets as collisions allow.
-    Vector<double> u(dofs.n_dofs());
-    if (with_contact)
-      barrier->begin_step(u);
-    if (with_friction)
-      friction->update(u);
-    potential.setup_system();
-    minimize_with_friction(u,
-                           dt,
-                           "step " + std::to_string(step_number) +
-                             ", t = " + std::to_string(time + dt));
+        // Algorithm 1 lines 3, 5: start from x^n, friction lagged there.
+        // The Newton solver moves constrained nodes and obstacles onto
+        // their targets as collisions allow.
+        u.reinit(dofs.n_dofs());
+        if (with_contact)
+          barrier->begin_step(u);
+        if (with_friction)
+          friction->update(u);
+        potential.setup_system();
+        minimize_with_friction(u,
+                               dt,
+                               "step " + std::to_string(step_number) +
+                                 ", t = " + std::to_string(time + dt) +
+                                 (pass > 0 ? ", full-Newton pass" : ""));
+        if (pass + 1 < passes)
+          {
+            first_pass_statistics = last_statistics;
+            first_pass_displacement.assign(state.mass.size(), Tensor<1, dim>());
+            for (unsigned int node = dofs.n_fem_nodes(); node < dofs.n_nodes();
+                 ++node)
+              first_pass_displacement[dofs.lattice_node(node)] =
+                DofSpace<dim>::get(u, node);
+          }
+        else if (pass > 0)
+          last_statistics += first_pass_statistics;
+      }
     measure_contact(u);
 
     const Vector<double> velocity =

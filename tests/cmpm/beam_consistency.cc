@@ -25,56 +25,15 @@
 #include <sstream>
 #include <string>
 
-#include "diagnostics_csv.h"
+#include "beam_run.h"
 #include "tests.h"
 
 using namespace dealii;
 
 namespace
 {
-  /** Runs prm/cmpm/beam_2d.prm with @p entries appended; returns the drop of
-   *  the centre of mass of both bodies between t = 0 and the end. */
-  double
-  run(const std::string &name, const std::string &entries)
-  {
-    {
-      std::ofstream prm(name + ".prm");
-      prm << "include " << SOURCE_DIR << "/../../prm/cmpm/beam_2d.prm\n"
-          << "subsection run\n  set name = " << name
-          << "\n  set quiet = true\nend\n"
-          << "subsection output\n  set directory = results\n"
-             "  set interval = 0.5\nend\n"
-          << entries;
-    }
-    bfemp::SceneParameters<2> parameters;
-    parameters.read(name + ".prm");
-    std::ostringstream   console;
-    bfemp::Simulation<2> simulation(parameters, name + ".prm", console);
-    simulation.run();
-    const auto c = bfemp_tests::read_columns(
-      "results/" + name + "/bodies.csv",
-      {"mpm0_mass", "mpm0_com_y", "mpm1_mass", "mpm1_com_y"});
-    const auto com = [&](const std::size_t row) {
-      return (c[0][row] * c[1][row] + c[2][row] * c[3][row]) /
-             (c[0][row] + c[2][row]);
-    };
-    return com(0) - com(c[0].size() - 1);
-  }
-
-  const std::string bsmpm_fine = "subsection cmpm\n  set enabled = false\nend\n"
-                                 "subsection grid\n"
-                                 "  set lower corner = -0.11, -0.01\n"
-                                 "  set upper corner = 2.51, 0.81\n"
-                                 "  set cell size    = 0.02\n"
-                                 "  set kernel       = quadratic\n"
-                                 "end\n"
-                                 "subsection boundaries\n"
-                                 "  set wall layers = 10\n"
-                                 "end\n"
-                                 "subsection body 0\n"
-                                 "  set particles per cell = 2\nend\n"
-                                 "subsection body 1\n"
-                                 "  set particles per cell = 2\nend\n";
+  using bfemp_tests::beam_drop;
+  const std::string bsmpm_fine = bfemp_tests::beam_bsmpm_fine(-0.01);
 
   const std::string bsmpm_coarse =
     "subsection cmpm\n  set enabled = false\nend\n"
@@ -89,9 +48,9 @@ namespace
   void
   compare(const std::string &label, const std::string &material)
   {
-    const double cmpm   = run(label + "_cmpm", material);
-    const double fine   = run(label + "_fine", material + bsmpm_fine);
-    const double coarse = run(label + "_coarse", material + bsmpm_coarse);
+    const double cmpm   = beam_drop(label + "_cmpm", material);
+    const double fine   = beam_drop(label + "_fine", material + bsmpm_fine);
+    const double coarse = beam_drop(label + "_coarse", material + bsmpm_coarse);
     deallog << std::setprecision(4) << label << ": centre-of-mass drop cMPM "
             << cmpm << " m, BSMPM-fine " << fine << " m, BSMPM-coarse "
             << coarse << " m" << std::endl;

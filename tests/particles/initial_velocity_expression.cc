@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "diagnostics_csv.h"
+#include "run_scene.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -58,11 +59,7 @@ main(int argc, char **argv)
                  "  subsection material\n    set density = 1000\n  end\n"
                  "end\n";
       }
-      bfemp::SceneParameters<2> parameters;
-      parameters.read(name + ".prm");
-      std::ostringstream   console;
-      bfemp::Simulation<2> simulation(parameters, name + ".prm", console);
-      simulation.run();
+      bfemp_tests::run_scene<2>(name + ".prm");
       const auto c =
         bfemp_tests::read_columns("results/" + name + "/bodies.csv",
                                   {"mpm0_mass",

@@ -3,6 +3,7 @@
 
 #include <bfemp/cmpm/coarse_boundary_map.h>
 #include <bfemp/cmpm/coarse_grid.h>
+#include <bfemp/material/material.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -30,6 +31,25 @@ namespace bfemp
     Tensor<2, dim> deformation_gradient;
     /** dP/dF at F_p^n (PSD-projected), the particle's own material. */
     Tensor<4, dim> tangent;
+    /** The particle's material: the full-Newton local solve evaluates it
+     *  away from F_p^n. */
+    const Material<dim> *material = nullptr;
+  };
+
+
+
+  /** How a full-Newton local solve (seed 002 Section 8.1.4) went. */
+  struct LocalSolveStatistics
+  {
+    /** Newton iterations from the first-Newton-step state. */
+    unsigned int iterations = 0;
+    /** The element's strain energy (with the fictitious material) at the
+     *  first-Newton-step interior displacement [J]. */
+    double first_step_energy = 0.;
+    /** The same at the converged local equilibrium [J]. */
+    double energy = 0.;
+    /** |f_i|_inf at the converged state [N]. */
+    double residual = 0.;
   };
 
 
@@ -74,7 +94,37 @@ namespace bfemp
     compute(const std::vector<LocalQuadraturePoint<dim>> &points,
             std::vector<Tensor<2, dim>>                  &control) const;
 
+    /**
+     * The `full Newton` local solve (seed 002 Section 8.1.4): with the
+     * boundary fine nodes at q_b = Psi_b Q (@p coarse_displacement: Q_I of
+     * the r local coarse nodes), the interior fine nodes are moved to the
+     * local equilibrium f_i(q_b, q_i) = 0 of the particles' own nonlinear
+     * materials, by Newton's method with a backtracking line search on the
+     * element's strain energy that keeps det F_p > 0, started from the
+     * first-Newton-step state q_i = p_i Q. The control is then eq. 30 with
+     * the tangent at that equilibrium, p_i = -K_i(q)^-1 K_ib(q) Psi_b. Each
+     * point needs its material. Throws SimulationError if the local
+     * solve does not converge.
+     */
+    LocalSolveStatistics
+    compute_at_equilibrium(
+      const std::vector<LocalQuadraturePoint<dim>> &points,
+      const std::vector<Tensor<1, dim>>            &coarse_displacement,
+      std::vector<Tensor<2, dim>>                  &control) const;
+
   private:
+    /** The weight of the fictitious material: eps times the points' mean
+     *  stiffness scale, or 1 without points. */
+    double
+    fictitious_weight(
+      const std::vector<LocalQuadraturePoint<dim>> &points) const;
+
+    /** Eq. 30 for every coarse column at once: control = -K_i^-1 R. */
+    void
+    condense(const FullMatrix<double>    &K_i,
+             const FullMatrix<double>    &R,
+             std::vector<Tensor<2, dim>> &control) const;
+
     /** Adds one quadrature point's w (dP/dF)-weighted products to K_i and
      *  R = K_ib Psi_b. */
     void

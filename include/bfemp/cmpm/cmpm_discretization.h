@@ -40,10 +40,25 @@ namespace bfemp
     CmpmDiscretization(const BackgroundGrid<dim> &grid,
                        const CmpmParameters      &parameters);
 
-    /** Rebuilds the shape functions of every element with particles. */
+    /**
+     * Rebuilds the shape functions of every element with particles: with
+     * the first Newton step of the local equilibrium (eq. 30), or, given
+     * @p coarse_displacement (one per node of node_lattice()), with the
+     * `full Newton` local solve at that displacement (Section 8.1.4).
+     */
     void
     reinit(ParticleSystem<dim>                               &particles,
-           const std::vector<std::unique_ptr<Material<dim>>> &materials);
+           const std::vector<std::unique_ptr<Material<dim>>> &materials,
+           const std::vector<Tensor<1, dim>> *coarse_displacement = nullptr);
+
+    /** Whether `cmpm/local solve` is `full Newton`. */
+    bool
+    full_newton() const;
+
+    /** The most Newton iterations a full-Newton local solve of the last
+     *  reinit() took (0 after a first-Newton-step reinit). */
+    unsigned int
+    local_iterations() const;
 
     /** The coarse nodes' activity mass and momentum (see the class
      *  documentation); @p state is resized. */
@@ -87,7 +102,8 @@ namespace bfemp
   private:
     CoarseGrid<dim>              grid;
     CoarsenedShapeFunctions<dim> phi;
-    double                       bound = 1.;
+    double                       bound                = 1.;
+    unsigned int                 max_local_iterations = 0;
   };
 } // namespace bfemp
 

@@ -14,7 +14,7 @@ namespace bfemp
    * shape functions of seed 002 (Sections 3-7). The coarse element span H is
    * the grid's `cell size`. The boundary-interior map takes the seed's
    * default local solve, one Newton step of the local equilibrium (eqs.
-   * 28-31).
+   * 28-31), or the full Newton solve of Section 8.1.4.
    */
   struct CmpmParameters
   {
@@ -39,6 +39,23 @@ namespace bfemp
       multilinear
     };
 
+    /**
+     * How the boundary-interior map M solves the local equilibrium of a
+     * coarse element (seed 002 Section 5.2 and 8.1.4).
+     */
+    enum class LocalSolve
+    {
+      /** One Newton step from the step's start, eq. 30: M from the tangent
+       *  at F_p^n (the seed's default). */
+      first_newton_step,
+      /**
+       * The local equilibrium solved to convergence under the boundary
+       * displacement a first pass of the step reached; M from the tangent
+       * there, and the step solved again with it (see doc/cmpm.md).
+       */
+      full_newton
+    };
+
     /** `cmpm/enabled`: the MPM bodies use cMPM instead of the grid kernel. */
     bool enabled = false;
     /** `cmpm/coarse element type`. */
@@ -55,6 +72,8 @@ namespace bfemp
      * role of the seed's diagonal shift, Remark 4; see doc/cmpm.md).
      */
     double empty_span_stiffness = 1e-6;
+    /** `cmpm/local solve`. */
+    LocalSolve local_solve = LocalSolve::first_newton_step;
 
     static void
     declare_parameters(ParameterHandler &prm);

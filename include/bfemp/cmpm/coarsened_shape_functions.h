@@ -69,6 +69,17 @@ namespace bfemp
     rebuild(const std::size_t                             element,
             const std::vector<LocalQuadraturePoint<dim>> &points);
 
+    /**
+     * Rebuilds one element with the `full Newton` local solve at the coarse
+     * displacement @p coarse_displacement of its r local nodes
+     * (BoundaryInteriorMap::compute_at_equilibrium).
+     */
+    LocalSolveStatistics
+    rebuild_at_equilibrium(
+      const std::size_t                             element,
+      const std::vector<LocalQuadraturePoint<dim>> &points,
+      const std::vector<Tensor<1, dim>>            &coarse_displacement);
+
     /** Whether reinit() built element @p element. */
     bool
     is_active(const std::size_t element) const;
@@ -129,6 +140,10 @@ namespace bfemp
     void
     build(const std::size_t                             element,
           const std::vector<LocalQuadraturePoint<dim>> &points);
+
+    /** interpolation_bound() of @p element from its control. */
+    void
+    update_bound(const std::size_t element);
   };
 } // namespace bfemp
 

@@ -133,9 +133,14 @@ namespace bfemp
     bodies_overlapping_fem() const;
 
   private:
-    /** P2G of mass and momentum (Algorithm 1 line 2); v = (m v) / m. */
+    /**
+     * P2G of mass and momentum (Algorithm 1 line 2); v = (m v) / m. With
+     * cMPM, the shape functions are rebuilt first: at the step's start, or
+     * given @p coarse_displacement, by the full-Newton local solve there.
+     */
     void
-    particles_to_grid();
+    particles_to_grid(
+      const std::vector<Tensor<1, dim>> *coarse_displacement = nullptr);
 
     /** Numbers FEM nodes and active grid nodes; gathers m and v^n. */
     void
