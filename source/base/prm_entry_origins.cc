@@ -1,4 +1,5 @@
 #include <bfemp/base/prm_entry_origins.h>
+#include <bfemp/base/prm_include.h>
 
 #include <algorithm>
 #include <cctype>
@@ -101,7 +102,7 @@ namespace bfemp
                 directory;
           }
         else if (strip_keyword(statement, "include"))
-          scan(statement, depth + 1);
+          scan(resolve_prm_include(statement, file), depth + 1);
       }
   }
 

@@ -26,7 +26,11 @@ namespace bfemp
                       "false",
                       Patterns::Bool(),
                       "[-] Also write the active grid (cells touching a node "
-                      "with mass) with nodal mass and velocity.");
+                      "with mass) with nodal mass and velocity; with cMPM, "
+                      "the active coarse elements subdivided into their "
+                      "fine knot spans, with the last step's displacement "
+                      "and velocity through the shape functions "
+                      "(coarse_grid.pvd).");
     prm.declare_entry("diagnostics interval",
                       "1",
                       Patterns::Integer(1),

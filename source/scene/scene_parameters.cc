@@ -1,8 +1,10 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/parameter_tools.h>
 #include <bfemp/base/prm_entry_origins.h>
+#include <bfemp/base/prm_include.h>
 #include <bfemp/scene/scene_parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -121,6 +123,7 @@ namespace bfemp
      *  subsection 'a/b', entry 'e' = v: what is allowed". */
     std::string
     explain_parse_error(const std::string      &said,
+                        const ExpandedPrm      &expanded,
                         const std::string      &file,
                         const ParameterHandler &prm)
     {
@@ -128,11 +131,18 @@ namespace bfemp
       if (!std::regex_match(said,
                             line,
                             std::regex("Line <([0-9]+)> of file <.*?>?: (.*)")))
-        return said;
-      std::ifstream            in(file);
+        return file + ": " + said;
+      // deal.II counts lines of the expanded text: name the file and line
+      // the statement is written in; the open subsections are those of the
+      // text up to it, includes and all.
+      const unsigned int n = std::stoi(line[1]);
+      const auto        &origin =
+        expanded.origins[std::min<std::size_t>(n, expanded.origins.size()) - 1];
+      std::istringstream       in(expanded.text);
       std::vector<std::string> path;
-      scan_prm(in, std::stoi(line[1]) - 1, path);
-      std::string where = "line " + line[1].str() + ", ";
+      scan_prm(in, n - 1, path);
+      std::string where =
+        origin.first + ": line " + std::to_string(origin.second) + ", ";
       if (path.empty())
         where += "top level";
       else
@@ -186,9 +196,13 @@ namespace bfemp
   {
     if (!std::filesystem::is_regular_file(file))
       throw InputError(file + ": no such parameter file");
+    // bfemp expands the includes itself: a relative include path means a
+    // file next to the including file (resolve_prm_include), and errors
+    // name the file and line they are in.
+    const ExpandedPrm expanded = expand_prm_includes(file);
     try
       {
-        prm.parse_input(file, "", lenient);
+        prm.parse_input_from_string(expanded.text, "", lenient);
       }
     catch (const InputError &)
       {
@@ -197,8 +211,7 @@ namespace bfemp
     catch (const std::exception &error)
       {
         throw InputError(
-          file + ": " +
-          explain_parse_error(what_deal_ii_says(error), file, prm));
+          explain_parse_error(what_deal_ii_says(error), expanded, file, prm));
       }
   }
 
@@ -354,12 +367,6 @@ namespace bfemp
                                                                       : "FLIP",
                   "cMPM transfers with PIC so far (its inertia is the "
                   "consistent one over the particles)");
-    require_input(!output.write_grid,
-                  "output",
-                  "write grid",
-                  "true",
-                  "the grid output shows B-spline grid nodes; cMPM's unknowns "
-                  "are coarse nodes: set 'write grid = false'");
   }
 
 

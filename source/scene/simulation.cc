@@ -454,6 +454,10 @@ namespace bfemp
                            : explicit_integrator->grid_state(),
                          time,
                          snapshot);
+    if (coarse_grid_output)
+      coarse_grid_output->write(implicit_integrator->grid_state(),
+                                time,
+                                snapshot);
     if (fem_output)
       fem_output->write(time, snapshot);
     ++snapshot;
@@ -640,8 +644,16 @@ namespace bfemp
     if (parameters.output.write_particles && particle_system.n_particles() > 0)
       particle_output =
         std::make_unique<ParticleOutput<dim>>(output_folder, materials);
+    // cMPM's unknowns are coarse nodes: its grid output is the coarse
+    // elements with their knot spans
     if (parameters.output.write_grid && particle_system.n_particles() > 0)
-      grid_output = std::make_unique<GridOutput<dim>>(output_folder, grid);
+      {
+        if (cmpm)
+          coarse_grid_output =
+            std::make_unique<CoarseGridOutput<dim>>(output_folder, *cmpm);
+        else
+          grid_output = std::make_unique<GridOutput<dim>>(output_folder, grid);
+      }
     if (!fem_body_list.empty())
       fem_output =
         std::make_unique<FemOutput<dim>>(output_folder, fem_body_list);
@@ -653,6 +665,8 @@ namespace bfemp
           particle_output->resume(snapshot);
         if (grid_output)
           grid_output->resume(snapshot);
+        if (coarse_grid_output)
+          coarse_grid_output->resume(snapshot);
         if (fem_output)
           fem_output->resume(snapshot);
       }

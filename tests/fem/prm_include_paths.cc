@@ -7,7 +7,11 @@
 //    wrapper;
 //  - continued lines, comments and upper-case keywords are read as deal.II
 //    reads them, and entries of other subsections do not interfere;
-//  - a missing file is reported with the directory it was looked for in.
+//  - a missing file is reported with the directory it was looked for in;
+//  - an include is resolved next to the including file (a scene in scenes/
+//    includes its sibling common.prm; a wrapper in another directory
+//    includes ../scenes/scene.prm), before the working directory;
+//  - a parse error in an included file names that file and its own line.
 
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/prm_entry_origins.h>
@@ -112,6 +116,54 @@ main(int argc, char **argv)
   dealii::deallog << "override opens " << overridden << std::endl;
   bfemp_tests::check(overridden == "local.msh",
                      "a relative file set by the wrapper is found next to it");
+
+  // includes relative to the including file
+  write("scenes/common.prm", "subsection run\n  set end time = 0.25\nend\n");
+  write("scenes/nested.prm",
+        "include common.prm\n"
+        "include scene.prm\n");
+  std::filesystem::create_directories("elsewhere");
+  write("elsewhere/wrapper.prm",
+        "include ../scenes/nested.prm\n"
+        "subsection run\n  set quiet = true\nend\n");
+  {
+    bfemp::SceneParameters<2> parameters;
+    parameters.read("elsewhere/wrapper.prm");
+    const std::string mesh =
+      std::filesystem::path(parameters.fem_bodies[0].mesh.file)
+        .lexically_normal()
+        .string();
+    dealii::deallog << "nested includes from elsewhere/: end time "
+                    << parameters.run.end_time << ", mesh " << mesh
+                    << std::endl;
+    bfemp_tests::check(parameters.run.end_time == 0.25 &&
+                         mesh == "scenes/box.msh",
+                       "includes are resolved next to the including file");
+  }
+
+  write("scenes/bad.prm",
+        "# a scene fragment with a typo\n"
+        "subsection grid\n"
+        "  set cel size = 0.1\n"
+        "end\n");
+  write("bad_wrapper.prm",
+        "set dimension = 2\n"
+        "include scenes/bad.prm\n");
+  std::string typo;
+  try
+    {
+      opened_mesh("bad_wrapper.prm");
+    }
+  catch (const bfemp::InputError &error)
+    {
+      typo = error.what();
+    }
+  dealii::deallog << "error in an included file: "
+                  << typo.substr(0, typo.find(';')) << std::endl;
+  bfemp_tests::check(typo.rfind("scenes/bad.prm: line 3, subsection 'grid', "
+                                "entry 'cel size'",
+                                0) == 0,
+                     "a parse error names the included file and its line");
 
   std::filesystem::remove("scenes/box.msh");
   std::string message;

@@ -18,9 +18,9 @@ namespace bfemp
    *
    * The scan follows the syntax deal.II reads: comments from '#', lines
    * continued by a trailing backslash, 'subsection', 'end', 'set' and
-   * 'include' (whose path deal.II opens as written, so relative to the
-   * working directory; the scan does the same). Files that cannot be opened
-   * are skipped: deal.II reports them when it parses.
+   * 'include' (resolved as parse_prm_file resolves it: next to the
+   * including file, else as written; resolve_prm_include()). Files that
+   * cannot be opened are skipped: the parse reports them.
    */
   class PrmEntryOrigins
   {

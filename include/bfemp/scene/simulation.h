@@ -8,6 +8,7 @@
 #include <bfemp/integrator/substepped_mpm.h>
 #include <bfemp/io/body_diagnostics_writer.h>
 #include <bfemp/io/checkpoint_file.h>
+#include <bfemp/io/coarse_grid_output.h>
 #include <bfemp/io/diagnostics_writer.h>
 #include <bfemp/io/fem_output.h>
 #include <bfemp/io/grid_output.h>
@@ -187,14 +188,15 @@ namespace bfemp
     /** Substeps of the last macro step (substepped integrator). */
     unsigned int last_substeps = 0;
     /** Newton statistics since the last diagnostics row. */
-    NewtonStatistics                     newton_since_row;
-    std::string                          output_folder;
-    std::unique_ptr<ParticleOutput<dim>> particle_output;
-    std::unique_ptr<GridOutput<dim>>     grid_output;
-    std::unique_ptr<FemOutput<dim>>      fem_output;
-    unsigned int                         step         = 0;
-    double                               current_time = 0.;
-    unsigned int                         snapshot     = 0;
+    NewtonStatistics                       newton_since_row;
+    std::string                            output_folder;
+    std::unique_ptr<ParticleOutput<dim>>   particle_output;
+    std::unique_ptr<GridOutput<dim>>       grid_output;
+    std::unique_ptr<CoarseGridOutput<dim>> coarse_grid_output;
+    std::unique_ptr<FemOutput<dim>>        fem_output;
+    unsigned int                           step         = 0;
+    double                                 current_time = 0.;
+    unsigned int                           snapshot     = 0;
   };
 } // namespace bfemp
 
