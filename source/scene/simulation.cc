@@ -169,6 +169,48 @@ namespace bfemp
 
 
   template <int dim>
+  Tensor<1, dim>
+  Simulation<dim>::initial_displacement_at(const unsigned int b,
+                                           const Point<dim>  &X) const
+  {
+    const PositionField<dim> &u     = parameters.bodies[b].initial_displacement;
+    const Tensor<1, dim>      value = u.value(X);
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!std::isfinite(value[d]))
+        throw InputError(
+          parameter_file + ": subsection 'body " + std::to_string(b) +
+          "', entry 'initial displacement': component " + std::to_string(d) +
+          " ('" + u.expressions()[d] + "') is not finite at the particle at " +
+          to_input_string(X) +
+          "; the expressions must be finite on the whole body");
+    return value;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  Simulation<dim>::initial_deformation_gradient(const unsigned int b,
+                                                const Point<dim>  &X) const
+  {
+    // F = dx/dX = I + grad u, by differences of a thousandth of a cell
+    const PositionField<dim> &u = parameters.bodies[b].initial_displacement;
+    const Tensor<2, dim>      F =
+      unit_symmetric_tensor<dim>() + u.gradient(X, 1e-3 * grid.lattice().dx);
+    const double J = determinant(F);
+    if (!(J > 0.) || !std::isfinite(F.norm()))
+      throw InputError(
+        parameter_file + ": subsection 'body " + std::to_string(b) +
+        "', entry 'initial displacement': det(I + grad u) = " +
+        to_input_string(J) + " at the particle at " + to_input_string(X) +
+        "; the initial displacement must not invert or "
+        "collapse the body (det F > 0 everywhere)");
+    return F;
+  }
+
+
+
+  template <int dim>
   void
   Simulation<dim>::create_bodies()
   {
@@ -185,13 +227,20 @@ namespace bfemp
                            ": the shape contains no particle (it is empty, "
                            "or smaller than a sub-cell of size dx / "
                            "'particles per cell')");
-        for (const Point<dim> &x : samples.back())
-          if (!grid.stencil_inside(x))
-            throw InputError(
-              where + ": the body reaches outside the grid (particle at " +
-              to_input_string(x) +
-              "); every particle's kernel stencil must lie inside "
-              "'grid/lower corner' .. 'grid/upper corner'");
+        for (const Point<dim> &X : samples.back())
+          {
+            initial_deformation_gradient(b, X); // det F > 0 first
+            const Point<dim> x = X + initial_displacement_at(b, X);
+            if (!grid.stencil_inside(x))
+              throw InputError(
+                where + ": the body reaches outside the grid (particle at " +
+                to_input_string(x) +
+                (x == X ? std::string()
+                        : ", displaced by 'initial displacement' from " +
+                            to_input_string(X)) +
+                "); every particle's kernel stencil must lie inside "
+                "'grid/lower corner' .. 'grid/upper corner'");
+          }
       }
 
     // Bodies must not overlap at t = 0 (BFEMP Section 2, eq. 15 assumes
@@ -222,9 +271,6 @@ namespace bfemp
         std::fill(properties.begin(), properties.end(), 0.);
         p[Layout::rest_volume] = volume;
 
-        Layout::set_tensor(p,
-                           Layout::deformation_gradient,
-                           unit_symmetric_tensor<dim>());
         p[Layout::body_id] = b;
         for (const Point<dim> &x : samples[b])
           {
@@ -233,19 +279,22 @@ namespace bfemp
               first_material[b] + body.material_index_at(x);
             p[Layout::material_id] = material;
             p[Layout::mass]        = material_densities[material] * volume;
-            const Tensor<1, dim> v = body.initial_velocity_at(x);
+            const Tensor<1, dim> v = body.initial_velocity.value(x);
             for (unsigned int d = 0; d < dim; ++d)
               if (!std::isfinite(v[d]))
                 throw InputError(
                   parameter_file + ": subsection 'body " + std::to_string(b) +
                   "', entry 'initial velocity': component " +
                   std::to_string(d) + " ('" +
-                  body.initial_velocity_expressions[d] +
+                  body.initial_velocity.expressions()[d] +
                   "') is not finite at the particle at " + to_input_string(x) +
                   "; the expressions must be finite on the whole body");
             Layout::set_vector(p, Layout::velocity, v);
             Layout::set_vector(p, Layout::initial_position, x);
-            particle_system.insert(x, p);
+            Layout::set_tensor(p,
+                               Layout::deformation_gradient,
+                               initial_deformation_gradient(b, x));
+            particle_system.insert(x + initial_displacement_at(b, x), p);
           }
       }
     particle_system.finish_insertion();

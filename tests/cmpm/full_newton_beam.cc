@@ -17,9 +17,11 @@
 #include <string>
 
 #include "beam_run.h"
+#include "format.h"
 #include "tests.h"
 
 using namespace dealii;
+using bfemp_tests::format;
 
 namespace
 {
@@ -32,14 +34,6 @@ namespace
            "subsection grid\n  set lower corner = -0.1, -0.3\nend\n"
            "subsection cmpm\n  set local solve = " +
            local_solve + "\nend\n";
-  }
-
-  std::string
-  format(const char *pattern, const double value)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), pattern, value);
-    return buffer;
   }
 } // namespace
 

@@ -23,20 +23,15 @@
 #include <memory>
 #include <vector>
 
+#include "format.h"
 #include "tests.h"
 
 namespace
 {
   using namespace dealii;
+  using bfemp_tests::format;
   using namespace bfemp;
 
-  std::string
-  format(const char *pattern, const double value)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), pattern, value);
-    return buffer;
-  }
 
   template <int dim>
   struct Element

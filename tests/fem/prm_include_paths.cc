@@ -10,7 +10,8 @@
 //  - a missing file is reported with the directory it was looked for in;
 //  - an include is resolved next to the including file (a scene in scenes/
 //    includes its sibling common.prm; a wrapper in another directory
-//    includes ../scenes/scene.prm), before the working directory;
+//    includes ../scenes/nested.prm, and the scene runs from the test's
+//    directory), before the working directory;
 //  - a parse error in an included file names that file and its own line.
 
 #include <bfemp/base/input_error.h>
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <string>
 
+#include "run_scene.h"
 #include "tests.h"
 
 namespace
@@ -125,7 +127,8 @@ main(int argc, char **argv)
   std::filesystem::create_directories("elsewhere");
   write("elsewhere/wrapper.prm",
         "include ../scenes/nested.prm\n"
-        "subsection run\n  set quiet = true\nend\n");
+        "subsection run\n  set quiet = true\nend\n"
+        "subsection output\n  set directory = results\nend\n");
   {
     bfemp::SceneParameters<2> parameters;
     parameters.read("elsewhere/wrapper.prm");
@@ -140,6 +143,14 @@ main(int argc, char **argv)
                          mesh == "scenes/box.msh",
                        "includes are resolved next to the including file");
   }
+  // and the scene runs so, from a directory that is neither the scene's
+  // nor the wrapper's
+  bfemp_tests::run_scene<2>("elsewhere/wrapper.prm");
+  const bool ran = std::filesystem::exists("results/default/fem_body_0.pvd") &&
+                   std::filesystem::exists("results/default/diagnostics.csv");
+  dealii::deallog << "the wrapper's run wrote results/default: "
+                  << (ran ? "yes" : "no") << std::endl;
+  bfemp_tests::check(ran, "the scene runs through the nested includes");
 
   write("scenes/bad.prm",
         "# a scene fragment with a typo\n"

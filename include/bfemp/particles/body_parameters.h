@@ -1,6 +1,7 @@
 #ifndef bfemp_particles_body_parameters_h
 #define bfemp_particles_body_parameters_h
 
+#include <bfemp/base/position_field.h>
 #include <bfemp/base/prm_entry_origins.h>
 #include <bfemp/material/material_parameters.h>
 #include <bfemp/particles/shape_primitive.h>
@@ -51,12 +52,17 @@ namespace bfemp
     unsigned int                     particles_per_direction = 2;
     bool                             jittered                = false;
     unsigned int                     jitter_seed             = 1;
-    /** Entry "initial velocity" when it holds numbers only. */
-    Tensor<1, dim> initial_velocity;
-    /** Its components as written: numbers, or muParser expressions of the
+    /** Entry "initial velocity": numbers, or muParser expressions of the
      *  rest position (x, y, z) and pi. */
-    std::vector<std::string> initial_velocity_expressions;
-    MaterialParameters       material;
+    PositionField<dim> initial_velocity;
+    /**
+     * Entry "initial displacement" u(X): a particle sampled at rest
+     * position X starts at X + u(X) with F = I + grad u(X) (a pre-stretched
+     * or pre-bent body); the shape and the regions describe the rest
+     * configuration.
+     */
+    PositionField<dim> initial_displacement;
+    MaterialParameters material;
 
     /** Declares the entries of a body with @p counts subsections. */
     static void
@@ -83,22 +89,6 @@ namespace bfemp
     parse_parameters(ParameterHandler      &prm,
                      const std::string     &where,
                      const PrmEntryOrigins *origins = nullptr);
-
-    /**
-     * The initial velocity of a particle at @p x: the constant, or the
-     * expressions evaluated there (not checked for NaN: the caller names
-     * the file and the point).
-     */
-    Tensor<1, dim>
-    initial_velocity_at(const Point<dim> &x) const;
-
-  private:
-    /** Reads the entry "initial velocity" (numbers or expressions). */
-    void
-    parse_initial_velocity(const std::string &text, const std::string &where);
-
-    /** The parsed expressions; null when the velocity is constant. */
-    std::shared_ptr<FunctionParser<dim>> velocity_function;
   };
 } // namespace bfemp
 

@@ -69,6 +69,16 @@ namespace bfemp
     void
     write_body_diagnostics(BodyDiagnosticsWriter<dim> &writer) const;
 
+    /** u(X) of body @p b's 'initial displacement' at rest position @p X
+     *  (InputError if not finite). */
+    Tensor<1, dim>
+    initial_displacement_at(const unsigned int b, const Point<dim> &X) const;
+
+    /** F = I + grad u(X) of body @p b (InputError if det F <= 0). */
+    Tensor<2, dim>
+    initial_deformation_gradient(const unsigned int b,
+                                 const Point<dim>  &X) const;
+
   private:
     /** Samples every body into particles and checks the scene at t = 0. */
     void
