@@ -39,21 +39,31 @@ namespace bfemp
     , potential(dofs)
     , newton(solver)
   {
-    // A scene switches on only the terms it has.
+    // A scene switches on only the terms it has; each is registered once
+    // with what the step does with it.
+    register_term(inertia, {}, false);
     if (cmpm)
-      cmpm_inertia =
-        std::make_unique<CmpmInertiaTerm<dim>>(particles, *cmpm, dofs);
-    std::vector<const EnergyTerm<dim> *> terms = {&inertia};
-    if (cmpm)
-      terms.push_back(cmpm_inertia.get());
+      {
+        cmpm_inertia =
+          std::make_unique<CmpmInertiaTerm<dim>>(particles, *cmpm, dofs);
+        register_term(*cmpm_inertia, {}, false);
+      }
     if (std::any_of(fem_bodies.begin(), fem_bodies.end(), [](const auto &b) {
           return !b->is_kinematic();
         }))
-      terms.push_back(&fem_elasticity);
-    if (with_mpm)
-      terms.push_back(
-        substepped_mpm ? &mpm_correction_elasticity
-                       : static_cast<const EnergyTerm<dim> *>(&mpm_elasticity));
+      register_term(
+        fem_elasticity,
+        [this](const double s, const double) { fem_elasticity.set_scale(s); },
+        true);
+    // substepped MPM: the elasticity relative to the substeps' prediction,
+    // whose force the substeps already applied (no a^n share)
+    const auto set_mpm_scale = [this](const double s, const double) {
+      mpm_elasticity.set_scale(s);
+    };
+    if (with_mpm && substepped_mpm)
+      register_term(mpm_correction_elasticity, set_mpm_scale, false);
+    else if (with_mpm)
+      register_term(mpm_elasticity, set_mpm_scale, true);
     if (with_contact)
       {
         contact_geometry = std::make_unique<ContactGeometry<dim>>(grid,
@@ -63,16 +73,42 @@ namespace bfemp
                                                                   cmpm);
         barrier          = std::make_unique<BarrierTerm<dim>>(*contact_geometry,
                                                      contact_parameters);
-        terms.push_back(barrier.get());
+        register_term(
+          *barrier,
+          [this](const double s, const double) { barrier->set_scale(s); },
+          true);
       }
     if (with_friction)
       {
+        // Lagged friction (BFEMP Section 5) is a force of the lagged
+        // state, not of x^n: it stays out of a^n, as in the paper.
         friction =
           std::make_unique<FrictionTerm<dim>>(*barrier, contact_parameters);
-        terms.push_back(friction.get());
+        register_term(
+          *friction,
+          [this](const double s, const double dt) {
+            friction->set_scale(s, dt);
+          },
+          false);
       }
+    std::vector<const EnergyTerm<dim> *> terms;
+    for (const RegisteredTerm &registered : registered_terms)
+      terms.push_back(registered.term);
     potential.set_terms(terms);
     last_contact.active = with_contact;
+  }
+
+
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::register_term(
+    const EnergyTerm<dim>                       &term,
+    std::function<void(double scale, double dt)> set_time_step,
+    const bool                                   force_at_start)
+  {
+    registered_terms.push_back(
+      {&term, std::move(set_time_step), force_at_start});
   }
 
 
@@ -249,12 +285,9 @@ namespace bfemp
       return acceleration; // backward Euler never uses a^n
     const Vector<double> at_start(dofs.n_dofs());
     Vector<double>       elastic_gradient(dofs.n_dofs());
-    if (!fem_bodies.empty())
-      fem_elasticity.add_gradient(at_start, elastic_gradient);
-    if (with_mpm && !substepped_mpm)
-      mpm_elasticity.add_gradient(at_start, elastic_gradient);
-    if (with_contact)
-      barrier->add_gradient(at_start, elastic_gradient);
+    for (const RegisteredTerm &registered : registered_terms)
+      if (registered.force_at_start)
+        registered.term->add_gradient(at_start, elastic_gradient);
     for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
       DofSpace<dim>::set(acceleration,
                          node,
@@ -478,12 +511,9 @@ namespace bfemp
                                 const unsigned int substeps)
   {
     scale = scheme.potential_weight() * dt * dt;
-    mpm_elasticity.set_scale(scale);
-    fem_elasticity.set_scale(scale);
-    if (with_contact)
-      barrier->set_scale(scale);
-    if (with_friction)
-      friction->set_scale(scale, dt);
+    for (const RegisteredTerm &registered : registered_terms)
+      if (registered.set_time_step)
+        registered.set_time_step(scale, dt);
 
     // cMPM's `full Newton` local solve (seed 002 Section 8.1.4) solves the
     // step twice: the second pass's shape functions come from the local

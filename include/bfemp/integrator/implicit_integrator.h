@@ -23,6 +23,7 @@
 #include <bfemp/solver/relative_energy_term.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -240,6 +241,30 @@ namespace bfemp
     std::unique_ptr<FrictionTerm<dim>>    friction;
     IncrementalPotential<dim>             potential;
     NewtonSolver<dim>                     newton;
+
+    /**
+     * One energy term of the step's potential and what the step does with
+     * it: the term list of the potential, the per-step scale and Newmark's
+     * start acceleration all come from this one list, so that a new term
+     * is registered in one place (register_term()) and cannot drop out of
+     * one of them silently.
+     */
+    struct RegisteredTerm
+    {
+      const EnergyTerm<dim> *term;
+      /** Sets the term's weight for the step (w dt^2, dt); may be empty. */
+      std::function<void(double scale, double dt)> set_time_step;
+      /** Whether the term's gradient at x^n is a force of the state at
+       *  t^n, which a^n = M^-1 (f^n) + g of Newmark includes. */
+      bool force_at_start;
+    };
+    std::vector<RegisteredTerm> registered_terms;
+
+    /** Adds @p term to the potential (in registration order). */
+    void
+    register_term(const EnergyTerm<dim>                       &term,
+                  std::function<void(double scale, double dt)> set_time_step,
+                  const bool                                   force_at_start);
 
     GridState<dim>      state;
     std::vector<double> node_mass;
