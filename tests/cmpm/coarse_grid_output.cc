@@ -25,6 +25,7 @@
 #include <regex>
 #include <sstream>
 
+#include "format.h"
 #include "run_scene.h"
 #include "tests.h"
 
@@ -136,8 +137,8 @@ namespace
     const auto         patches = output.build_patches(state);
     const unsigned int spans   = cmpm.coarse_grid().n_fine_1d() - 2;
     const double       H       = cmpm.coarse_grid().element_size();
-    double             u_error = 0., v_error = 0.;
-    bool               geometry = patches.size() == (1u << dim);
+    double u_error = 0., v_error = 0., u_largest = 0., expected_largest = 0.;
+    bool   geometry = patches.size() == (1u << dim);
     for (const auto &patch : patches)
       {
         geometry =
@@ -158,11 +159,19 @@ namespace
               {
                 u_error =
                   std::max(u_error, std::abs(patch.data(d, point) - u[d]));
-                v_error = std::max(v_error,
+                u_largest =
+                  std::max(u_largest, std::abs(double(patch.data(d, point))));
+                expected_largest = std::max(expected_largest, std::abs(u[d]));
+                v_error          = std::max(v_error,
                                    std::abs(patch.data(dim + d, point) - c[d]));
               }
           }
       }
+    deallog << name << ": " << patches.size()
+            << " patches, largest displacement component "
+            << bfemp_tests::format("%.6f", u_largest) << " m (A x + b there: "
+            << bfemp_tests::format("%.6f", expected_largest) << " m)"
+            << std::endl;
     std::cout << name << ": displacement error " << u_error
               << " m, velocity error " << v_error << " m/s" << std::endl;
     bfemp_tests::check(geometry,
