@@ -769,7 +769,7 @@ namespace
     std::sort(cells.begin(), cells.end(), [](const auto &a, const auto &b) {
       return a.first < b.first;
     });
-    scene.integrator.step(dt, time);
+    scene.integrator.step({dt, time});
     time += dt;
     std::size_t crossed = 0;
     for (auto p = handler.begin(); p != handler.end(); ++p)
@@ -843,7 +843,7 @@ namespace
     double             time    = 0.;
     MultithreadInfo::set_thread_limit(1);
     for (unsigned int s = 0; s < warm_up; ++s, time += dt)
-      scene->integrator.step(dt, time);
+      scene->integrator.step({dt, time});
     Difference difference;
     {
       HandLoop<dim> loop = initial_loop;
@@ -867,7 +867,7 @@ namespace
       {
         const auto start = Clock::now();
         for (unsigned int s = 0; s < options.profile_steps; ++s, time += dt)
-          scene->integrator.step(dt, time);
+          scene->integrator.step({dt, time});
         const double seconds = seconds_since(start);
         std::cout << "  profile: " << options.profile_steps << " steps in "
                   << seconds << " s, "
@@ -882,7 +882,7 @@ namespace
     unsigned int calibration_steps = 0;
     do
       {
-        scene->integrator.step(dt, time);
+        scene->integrator.step({dt, time});
         time += dt;
         ++calibration_steps;
     } while (seconds_since(calibrate_start) < 0.1 * options.seconds);
@@ -922,11 +922,11 @@ namespace
             MultithreadInfo::set_thread_limit(thread_counts[t]);
             time = 0.;
             for (unsigned int s = 0; s < warm_up; ++s, time += dt)
-              scene->integrator.step(dt, time);
+              scene->integrator.step({dt, time});
             const double cpu_start = process_cpu_seconds();
             const auto   start     = Clock::now();
             for (unsigned int s = 0; s < steps; ++s, time += dt)
-              scene->integrator.step(dt, time);
+              scene->integrator.step({dt, time});
             wall[t].push_back(seconds_since(start));
             cpu[t].push_back(process_cpu_seconds() - cpu_start);
             std::cout << "  bfemp " << thread_counts[t]

@@ -616,10 +616,10 @@ namespace
       }
     const double cpu_start = process_cpu_seconds();
     const auto   start     = Clock::now();
-    scene.integrator->step(dt, step * dt, step + 1);
+    scene.integrator->step({dt, step * dt, step + 1});
     record.seconds     = seconds_since(start);
     record.cpu_seconds = process_cpu_seconds() - cpu_start;
-    record.newton      = scene.integrator->statistics();
+    record.newton      = *scene.integrator->newton_statistics();
     if (with_pattern)
       AssertThrow(record.n_dofs == scene.integrator->n_dofs(),
                   ExcMessage("the benchmark's copy of the DoF space has " +

@@ -42,6 +42,18 @@ namespace bfemp
                       "spans hold no particle (seed 002 Remark 4) without "
                       "breaking the partition of unity. In [0, 1e-2].");
     prm.declare_entry(
+      "weak node regularization",
+      "1e-2",
+      Patterns::Double(),
+      "[-] r: a coarse node whose mass m_I (sum_p m_p |Phi_Ip|) is below the "
+      "mean m_e of its element's nodes is tied to the affine motion of the "
+      "element's nodes, relative to the predictor, with the weight "
+      "r (m_e - m_I). The particles see such nodes with weights near zero, "
+      "and without the tie they take arbitrary displacements that inflate "
+      "the coarse-grid output and the contact broad phase (doc/cmpm.md). "
+      "The tie conserves momentum and leaves affine motion alone. 0 "
+      "switches it off. In [0, 1].");
+    prm.declare_entry(
       "local solve",
       "first Newton step",
       Patterns::Selection("first Newton step|full Newton"),
@@ -68,9 +80,11 @@ namespace bfemp
     nodes_per_span         = prm.get("coarse node span") == "H" ? 1 : 2;
     const long n           = prm.get_integer("fine nodes per direction");
     empty_span_stiffness   = prm.get_double("empty span stiffness");
-    local_solve            = prm.get("local solve") == "full Newton"
-                               ? LocalSolve::full_newton
-                               : LocalSolve::first_newton_step;
+    weak_node_regularization =
+      prm.get_double("weak node regularization");
+    local_solve = prm.get("local solve") == "full Newton"
+                    ? LocalSolve::full_newton
+                    : LocalSolve::first_newton_step;
     prm.leave_subsection();
 
     require_input(n >= 5 && n <= 32,
@@ -85,6 +99,12 @@ namespace bfemp
                   "empty span stiffness",
                   to_input_string(empty_span_stiffness),
                   "must be in [0, 1e-2]");
+    require_input(weak_node_regularization >= 0. &&
+                    weak_node_regularization <= 1.,
+                  "cmpm",
+                  "weak node regularization",
+                  to_input_string(weak_node_regularization),
+                  "must be in [0, 1]");
     require_input(!(element_type == ElementType::multilinear &&
                     nodes_per_span != 1),
                   "cmpm",

@@ -79,8 +79,10 @@ namespace bfemp
 
   template <int dim>
   void
-  ExplicitMPM<dim>::step(const double dt, const double time)
+  ExplicitMPM<dim>::step(const TimeStep &step)
   {
+    const double dt   = step.dt;
+    const double time = step.time;
     state.reinit(grid.lattice().n_nodes);
     if (variant == TimeParameters::Integrator::explicit_usl)
       {

@@ -17,7 +17,7 @@ namespace bfemp
     const TimeParameters::ImplicitScheme              &scheme,
     const SolverParameters                            &solver,
     const ContactParameters                           &contact,
-    SubsteppedMPM<dim>                                *substepped_mpm,
+    std::unique_ptr<SubsteppedMPM<dim>>                substepped,
     CmpmDiscretization<dim>                           *cmpm)
     : grid(grid)
     , particles(particles)
@@ -28,7 +28,8 @@ namespace bfemp
     , gravity(gravity)
     , scheme(scheme)
     , with_mpm(particles.n_particles() > 0)
-    , substepped_mpm(substepped_mpm)
+    , owned_substepped_mpm(std::move(substepped))
+    , substepped_mpm(owned_substepped_mpm.get())
     , cmpm(cmpm)
     , contact_parameters(contact)
     , with_contact(with_mpm && !fem_bodies.empty())
@@ -47,6 +48,17 @@ namespace bfemp
         cmpm_inertia =
           std::make_unique<CmpmInertiaTerm<dim>>(particles, *cmpm, dofs);
         register_term(*cmpm_inertia, {}, false);
+        const double r =
+          cmpm->coarse_grid().parameters().weak_node_regularization;
+        if (r > 0.)
+          {
+            cmpm_regularization =
+              std::make_unique<CmpmRegularizationTerm<dim>>(particles,
+                                                            *cmpm,
+                                                            dofs,
+                                                            r);
+            register_term(*cmpm_regularization, {}, false);
+          }
       }
     if (std::any_of(fem_bodies.begin(), fem_bodies.end(), [](const auto &b) {
           return !b->is_kinematic();
@@ -505,12 +517,13 @@ namespace bfemp
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::step(const double       dt,
-                                const double       time,
-                                const unsigned int step_number,
-                                const unsigned int substeps)
+  ImplicitIntegrator<dim>::step(const TimeStep &time_step)
   {
-    scale = scheme.potential_weight() * dt * dt;
+    const double       dt          = time_step.dt;
+    const double       time        = time_step.time;
+    const unsigned int step_number = time_step.number;
+    const unsigned int substeps    = time_step.substeps;
+    scale                          = scheme.potential_weight() * dt * dt;
     for (const RegisteredTerm &registered : registered_terms)
       if (registered.set_time_step)
         registered.set_time_step(scale, dt);
@@ -552,6 +565,8 @@ namespace bfemp
               m *= 1e-8;
             inertia.reinit(regularization, predicted);
             cmpm_inertia->reinit(dt, scale, gravity);
+            if (cmpm_regularization)
+              cmpm_regularization->reinit(node_mass);
           }
         else
           inertia.reinit(node_mass, predicted);
@@ -636,10 +651,10 @@ namespace bfemp
 
 
   template <int dim>
-  const ContactStatistics<dim> &
+  const ContactStatistics<dim> *
   ImplicitIntegrator<dim>::contact_statistics() const
   {
-    return last_contact;
+    return &last_contact;
   }
 
 
@@ -654,10 +669,10 @@ namespace bfemp
 
 
   template <int dim>
-  const NewtonStatistics &
-  ImplicitIntegrator<dim>::statistics() const
+  const NewtonStatistics *
+  ImplicitIntegrator<dim>::newton_statistics() const
   {
-    return last_statistics;
+    return &last_statistics;
   }
 
 

@@ -97,7 +97,7 @@ namespace bfemp
     save_start_state();
     const double substep = dt / substeps;
     for (unsigned int s = 0; s < substeps; ++s)
-      substep_integrator.step(substep, time + s * substep);
+      substep_integrator.step({substep, time + s * substep});
     secant_targets_and_restore(dt);
 
     std::vector<Tensor<1, dim>> &secant = macro_grid.displacement;
@@ -124,10 +124,9 @@ namespace bfemp
 
   template <int dim>
   void
-  SubsteppedMPM<dim>::step(const double       dt,
-                           const double       time,
-                           const unsigned int substeps)
+  SubsteppedMPM<dim>::step(const TimeStep &step)
   {
+    Assert(step.substeps > 0, ExcMessage("a macro step needs substeps"));
     // The grid of step n: its masses weight the reconstruction, its
     // velocities v_k^n are FLIP's old grid velocity in the macro G2P.
     state.reinit(grid.lattice().n_nodes);
@@ -135,7 +134,7 @@ namespace bfemp
     for (std::size_t k = 0; k < state.mass.size(); ++k)
       if (state.mass[k] > 0.)
         state.velocity[k] /= state.mass[k];
-    substep_and_reconstruct(dt, time, substeps, state);
+    substep_and_reconstruct(step.dt, step.time, step.substeps, state);
     macro_transfer.grid_to_particles(particles, state, true);
     particles.update_cells();
   }

@@ -47,7 +47,12 @@ namespace bfemp
   void
   Simulation<dim>::create_integrator()
   {
+    // The one place that maps 'time/integrator' (and the scene: FEM bodies,
+    // cMPM) to a TimeIntegrator; the time loop only sees the interface.
     const TimeParameters &time = parameters.time;
+    if (parameters.cmpm.enabled)
+      cmpm = std::make_unique<CmpmDiscretization<dim>>(grid, parameters.cmpm);
+    std::unique_ptr<SubsteppedMPM<dim>> substepped;
     if (time.is_substepped())
       {
         if (time.substepping.own_macro_transfer)
@@ -59,7 +64,7 @@ namespace bfemp
                                                           macro,
                                                           materials);
           }
-        substepped_integrator =
+        substepped =
           std::make_unique<SubsteppedMPM<dim>>(grid,
                                                particle_system,
                                                transfer,
@@ -68,12 +73,17 @@ namespace bfemp
                                                parameters.boundaries,
                                                parameters.gravity,
                                                time.substepping);
+        // Without FEM bodies the macro step is the substeps alone; with them
+        // the substeps' prediction enters the implicit contact solve below.
+        if (fem_body_list.empty())
+          {
+            time_integrator = std::move(substepped);
+            return;
+          }
       }
-    if (parameters.cmpm.enabled)
-      cmpm = std::make_unique<CmpmDiscretization<dim>>(grid, parameters.cmpm);
-    if (time.is_implicit() || (time.is_substepped() && !fem_body_list.empty()))
+    if (time.is_implicit() || substepped)
       {
-        implicit_integrator =
+        auto implicit =
           std::make_unique<ImplicitIntegrator<dim>>(grid,
                                                     particle_system,
                                                     macro_transfer
@@ -86,42 +96,48 @@ namespace bfemp
                                                     time.implicit_scheme(),
                                                     parameters.solver,
                                                     parameters.contact,
-                                                    substepped_integrator.get(),
+                                                    std::move(substepped),
                                                     cmpm.get());
-        // Bodies must start apart (eq. 15): a particle inside an FEM mesh, or
-        // on its boundary where the barrier is infinite, has no valid state.
-        const unsigned int touching =
-          implicit_integrator->particles_touching_fem();
-        if (touching > 0)
-          {
-            // name the bodies: those with a particle inside an element, or
-            // all when particles only touch a boundary (distance 0)
-            std::string which;
-            for (const auto &[mpm, fem] :
-                 implicit_integrator->bodies_overlapping_fem())
-              which += std::string(which.empty() ? "" : ", ") +
-                       "subsections 'body " + std::to_string(mpm) +
-                       "' and 'fem body " + std::to_string(fem) + "'";
-            throw InputError(
-              parameter_file + ": " +
-              (which.empty() ? std::string("MPM bodies and FEM bodies")
-                             : which) +
-              ": MPM bodies and FEM bodies overlap at t = 0: " +
-              std::to_string(touching) +
-              " particle(s) lie inside an FEM mesh or on its boundary. "
-              "Bodies must start apart; a particle closer than "
-              "'contact/activation distance' feels the barrier from the "
-              "first step.");
-          }
+        check_bodies_apart(*implicit);
+        time_integrator = std::move(implicit);
       }
-    else if (!time.is_substepped())
-      explicit_integrator =
+    else
+      time_integrator =
         std::make_unique<ExplicitMPM<dim>>(grid,
                                            particle_system,
                                            transfer,
                                            parameters.boundaries,
                                            parameters.gravity,
                                            time.integrator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::check_bodies_apart(ImplicitIntegrator<dim> &implicit) const
+  {
+    // Bodies must start apart (eq. 15): a particle inside an FEM mesh, or
+    // on its boundary where the barrier is infinite, has no valid state.
+    const unsigned int touching = implicit.particles_touching_fem();
+    if (touching == 0)
+      return;
+    // name the bodies: those with a particle inside an element, or all when
+    // particles only touch a boundary (distance 0)
+    std::string which;
+    for (const auto &[mpm, fem] : implicit.bodies_overlapping_fem())
+      which += std::string(which.empty() ? "" : ", ") + "subsections 'body " +
+               std::to_string(mpm) + "' and 'fem body " + std::to_string(fem) +
+               "'";
+    throw InputError(
+      parameter_file + ": " +
+      (which.empty() ? std::string("MPM bodies and FEM bodies") : which) +
+      ": MPM bodies and FEM bodies overlap at t = 0: " +
+      std::to_string(touching) +
+      " particle(s) lie inside an FEM mesh or on its boundary. "
+      "Bodies must start apart; a particle closer than "
+      "'contact/activation distance' feels the barrier from the "
+      "first step.");
   }
 
 
@@ -153,17 +169,11 @@ namespace bfemp
                            const double time,
                            const double max_speed)
   {
-    if (substepped_integrator)
+    if (parameters.time.is_substepped())
       last_substeps = substeps_for(dt, max_speed);
-    if (implicit_integrator)
-      {
-        implicit_integrator->step(dt, time, step + 1, last_substeps);
-        newton_since_row += implicit_integrator->statistics();
-      }
-    else if (substepped_integrator)
-      substepped_integrator->step(dt, time, last_substeps);
-    else
-      explicit_integrator->step(dt, time);
+    time_integrator->step({dt, time, step + 1, last_substeps});
+    if (const NewtonStatistics *newton = time_integrator->newton_statistics())
+      newton_since_row += *newton;
   }
 
 
@@ -463,6 +473,15 @@ namespace bfemp
 
 
   template <int dim>
+  const TimeIntegrator<dim> &
+  Simulation<dim>::integrator() const
+  {
+    return *time_integrator;
+  }
+
+
+
+  template <int dim>
   ParticleSystem<dim> &
   Simulation<dim>::particles()
   {
@@ -497,16 +516,9 @@ namespace bfemp
     if (particle_output)
       particle_output->write(particle_system, time, snapshot);
     if (grid_output)
-      grid_output->write(implicit_integrator ? implicit_integrator->grid_state()
-                         : substepped_integrator
-                           ? substepped_integrator->grid_state()
-                           : explicit_integrator->grid_state(),
-                         time,
-                         snapshot);
+      grid_output->write(time_integrator->grid_state(), time, snapshot);
     if (coarse_grid_output)
-      coarse_grid_output->write(implicit_integrator->grid_state(),
-                                time,
-                                snapshot);
+      coarse_grid_output->write(time_integrator->grid_state(), time, snapshot);
     if (fem_output)
       fem_output->write(time, snapshot);
     ++snapshot;
@@ -638,9 +650,7 @@ namespace bfemp
       {
         throw InputError(entry + error.what());
       }
-    if (implicit_integrator)
-      implicit_integrator->resume_friction_dissipation(
-        progress.friction_dissipation);
+    time_integrator->resume_friction_dissipation(progress.friction_dissipation);
     step         = progress.step;
     current_time = progress.time;
     snapshot     = progress.snapshot;
@@ -660,9 +670,9 @@ namespace bfemp
     progress.snapshot    = snapshot;
     progress.next_output = next_output;
     progress.wall_time   = wall_time;
-    if (implicit_integrator)
-      progress.friction_dissipation =
-        implicit_integrator->contact_statistics().accumulated_dissipation;
+    if (const ContactStatistics<dim> *contact =
+          time_integrator->contact_statistics())
+      progress.friction_dissipation = contact->accumulated_dissipation;
     CheckpointFile<dim>(checkpoint_path())
       .write(progress, particle_system, fem_body_list);
   }
@@ -719,18 +729,21 @@ namespace bfemp
         if (fem_output)
           fem_output->resume(snapshot);
       }
-    const bool with_contact =
-      implicit_integrator && implicit_integrator->contact_statistics().active;
+    const ContactStatistics<dim> *contact_state =
+      time_integrator->contact_statistics();
+    const bool with_contact = contact_state && contact_state->active;
     DiagnosticsWriter<dim> diagnostics_writer =
-      with_contact ? DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
-                                            parameters.bodies.size(),
-                                            parameters.fem_bodies.size(),
-                                            parameters.time.is_substepped(),
-                                            resume_step)
-                   : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
-                                            implicit_integrator != nullptr,
-                                            parameters.time.is_substepped(),
-                                            resume_step);
+      with_contact
+        ? DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
+                                 parameters.bodies.size(),
+                                 parameters.fem_bodies.size(),
+                                 parameters.time.is_substepped(),
+                                 resume_step)
+        : DiagnosticsWriter<dim>(output_folder + "/diagnostics.csv",
+                                 time_integrator->newton_statistics() !=
+                                   nullptr,
+                                 parameters.time.is_substepped(),
+                                 resume_step);
     BodyDiagnosticsWriter<dim> body_writer(output_folder + "/bodies.csv",
                                            parameters.bodies.size(),
                                            parameters.fem_bodies.size(),
@@ -801,17 +814,16 @@ namespace bfemp
           {
                    state = diagnostics();
                    check_state(state);
-                   diagnostics_writer.write(
-              step,
-              time,
-              dt,
-              state,
-              progress.wall_time(),
-              newton_since_row,
-              implicit_integrator ? implicit_integrator->n_dofs() : 0,
-              implicit_integrator ? implicit_integrator->contact_statistics()
-                                         : ContactStatistics<dim>(),
-              last_substeps);
+                   diagnostics_writer.write(step,
+                                     time,
+                                     dt,
+                                     state,
+                                     progress.wall_time(),
+                                     newton_since_row,
+                                     time_integrator->n_dofs(),
+                                     contact_state ? *contact_state
+                                                          : ContactStatistics<dim>(),
+                                     last_substeps);
                    newton_since_row = NewtonStatistics();
                    write_body_diagnostics(body_writer);
           }
@@ -829,21 +841,22 @@ namespace bfemp
             while (next_output <= time + 1e-9 * dt)
               next_output += std::max(parameters.output.interval, dt);
           }
-               if (implicit_integrator)
+               if (const NewtonStatistics *newton =
+              time_integrator->newton_statistics())
           {
-                   const auto &contact = implicit_integrator->contact_statistics();
                    progress.report(step,
                             time,
                             dt,
-                            implicit_integrator->statistics().iterations,
-                            implicit_integrator->n_dofs(),
-                            contact.active ? static_cast<int>(contact.pairs)
-                                                  : -1,
+                            newton->iterations,
+                            time_integrator->n_dofs(),
+                            contact_state && contact_state->active
+                                     ? static_cast<int>(contact_state->pairs)
+                                     : -1,
                             last_substeps);
-                   if (!contact.friction_converged)
+                   if (contact_state && !contact_state->friction_converged)
               std::cerr << "bfemp: warning: step " << step
                         << ": friction not converged after "
-                        << contact.friction_updates
+                        << contact_state->friction_updates
                         << " updates ('contact/maximum friction "
                                   "iterations'); the step goes on with the last "
                                   "lagged friction."

@@ -80,21 +80,23 @@ main(int argc, char **argv)
                        defaults.element_type ==
                          CmpmParameters::ElementType::boundary_bspline &&
                        defaults.nodes_per_span == 2 && defaults.n_fine == 7 &&
-                       defaults.empty_span_stiffness == 1e-6,
+                       defaults.empty_span_stiffness == 1e-6 &&
+                       defaults.weak_node_regularization == 1e-2,
                      "defaults: off, boundary B-spline, L = H/2, n = 7, "
-                     "empty span stiffness 1e-6");
+                     "empty span stiffness 1e-6, weak node regularization "
+                     "1e-2");
 
   const CmpmParameters set = parse("set enabled = true\n"
                                    "set coarse element type = B-spline\n"
                                    "set coarse node span = H\n"
                                    "set fine nodes per direction = 5\n"
-                                   "set empty span stiffness = 1e-4");
-  bfemp_tests::check(set.enabled &&
-                       set.element_type ==
-                         CmpmParameters::ElementType::bspline &&
-                       set.nodes_per_span == 1 && set.n_fine == 5 &&
-                       set.empty_span_stiffness == 1e-4,
-                     "every entry parsed");
+                                   "set empty span stiffness = 1e-4\n"
+                                   "set weak node regularization = 0");
+  bfemp_tests::check(
+    set.enabled && set.element_type == CmpmParameters::ElementType::bspline &&
+      set.nodes_per_span == 1 && set.n_fine == 5 &&
+      set.empty_span_stiffness == 1e-4 && set.weak_node_regularization == 0.,
+    "every entry parsed");
 
   refused_by_pattern("set fine nodes per direction = 4",
                      "fine nodes per direction");
@@ -102,6 +104,8 @@ main(int argc, char **argv)
                      "fine nodes per direction");
   refused("set empty span stiffness = -1e-6", "empty span stiffness");
   refused("set empty span stiffness = 0.5", "empty span stiffness");
+  refused("set weak node regularization = -0.1", "weak node regularization");
+  refused("set weak node regularization = 2", "weak node regularization");
   refused("set coarse element type = multilinear\n"
           "set coarse node span = H/2",
           "coarse node span");

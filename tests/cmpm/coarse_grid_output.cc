@@ -25,6 +25,7 @@
 #include <regex>
 #include <sstream>
 
+#include "cmpm/particle_block.h"
 #include "format.h"
 #include "run_scene.h"
 #include "tests.h"
@@ -66,50 +67,33 @@ namespace
   void
   test()
   {
-    using Layout           = ParticleLayout<dim>;
     const std::string name = std::to_string(dim) + "D";
 
-    GridParameters<dim> grid_parameters;
-    for (unsigned int d = 0; d < dim; ++d)
-      grid_parameters.upper_corner[d] = 1.;
-    grid_parameters.cell_size = 0.25;
-    BackgroundGrid<dim> grid(grid_parameters);
-    ParticleSystem<dim> particles(grid);
-    CmpmParameters      cmpm_parameters;
-    cmpm_parameters.enabled = true;
-    cmpm_parameters.n_fine  = 5;
-    CmpmDiscretization<dim>                     cmpm(grid, cmpm_parameters);
+    BackgroundGrid<dim>     grid(bfemp_tests::unit_box_grid<dim>(0.25));
+    ParticleSystem<dim>     particles(grid);
+    CmpmDiscretization<dim> cmpm(grid, bfemp_tests::cmpm_with_fine_nodes(5));
     std::vector<std::unique_ptr<Material<dim>>> materials;
     materials.push_back(
       create_material<dim>("neo-Hookean",
                            ElasticModuli::from_young_poisson(1e5, 0.3)));
 
     // the block [0.25, 0.75]^dim, 2 particles per knot span (s = 0.25 / 3)
-    const unsigned int n_1d  = 12;
-    const double       h     = 0.5 / n_1d;
-    unsigned int       total = 1;
+    Point<dim> lower;
     for (unsigned int d = 0; d < dim; ++d)
-      total *= n_1d;
-    for (unsigned int k = 0; k < total; ++k)
-      {
-        Point<dim>   x;
-        unsigned int index = k;
-        for (unsigned int d = 0; d < dim; ++d, index /= n_1d)
-          x[d] = 0.25 + (index % n_1d + 0.5) * h;
-        std::vector<double>     properties(Layout::n_properties, 0.);
-        const ArrayView<double> p = make_array_view(properties);
-        p[Layout::mass]           = 1000. * std::pow(h, dim);
-        p[Layout::rest_volume]    = std::pow(h, dim);
-        Layout::set_tensor(p,
-                           Layout::deformation_gradient,
-                           unit_symmetric_tensor<dim>());
-        Layout::set_vector(p, Layout::initial_position, x);
-        particles.insert(x, make_array_view(std::as_const(properties)));
-      }
+      lower[d] = 0.25;
+    bfemp_tests::insert_particle_block<dim>(particles,
+                                            lower,
+                                            0.5 / 12,
+                                            bfemp_tests::cube_counts<dim>(12),
+                                            1000.,
+                                            [](Point<dim> &,
+                                               const ArrayView<double> &) {});
     particles.finish_insertion();
     cmpm.reinit(particles, materials);
 
+    // a fresh folder: a rerun in the same build must not see the last run's
     const std::string folder = "output_" + name;
+    std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
     CoarseGridOutput<dim> output(folder, cmpm);
     GridState<dim>        state;

@@ -118,7 +118,7 @@ namespace
     bool             finite = true;
     for (unsigned int n = 0; n < 100; ++n)
       {
-        integrator.step(dt, n * dt);
+        integrator.step({dt, n * dt});
         const StepDiagnostics<dim> now = measure();
         max_momentum =
           std::max(max_momentum,

@@ -72,6 +72,13 @@ namespace bfemp
      * role of the seed's diagonal shift, Remark 4; see doc/cmpm.md).
      */
     double empty_span_stiffness = 1e-6;
+    /**
+     * `cmpm/weak node regularization`: r of CmpmRegularizationTerm, which
+     * ties the coarse nodes that the particles barely see to the affine
+     * motion of their elements (bfemp's addition; 0 switches it off).
+     */
+    double weak_node_regularization = 1e-2;
+
     /** `cmpm/local solve`. */
     LocalSolve local_solve = LocalSolve::first_newton_step;
 

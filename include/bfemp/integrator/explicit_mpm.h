@@ -3,6 +3,7 @@
 
 #include <bfemp/boundary/grid_boundaries.h>
 #include <bfemp/grid/grid_state.h>
+#include <bfemp/integrator/time_integrator.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
@@ -21,7 +22,7 @@ namespace bfemp
    * update -> boundary conditions -> G2P without another F update.
    */
   template <int dim>
-  class ExplicitMPM
+  class ExplicitMPM : public TimeIntegrator<dim>
   {
   public:
     ExplicitMPM(const BackgroundGrid<dim>       &grid,
@@ -31,13 +32,13 @@ namespace bfemp
                 const Tensor<1, dim>            &gravity,
                 const TimeParameters::Integrator variant);
 
-    /** Advances from @p time to time + dt. */
+    /** Advances from step.time to step.time + step.dt. */
     void
-    step(const double dt, const double time);
+    step(const TimeStep &step) override;
 
     /** The grid fields of the last step (for output). */
     const GridState<dim> &
-    grid_state() const;
+    grid_state() const override;
 
   private:
     /** v_i = (m v)_i / m_i on nodes with mass. */

@@ -4,6 +4,7 @@
 #include <bfemp/boundary/grid_boundaries.h>
 #include <bfemp/cmpm/cmpm_discretization.h>
 #include <bfemp/cmpm/cmpm_inertia_term.h>
+#include <bfemp/cmpm/cmpm_regularization_term.h>
 #include <bfemp/contact/barrier_term.h>
 #include <bfemp/contact/contact_geometry.h>
 #include <bfemp/contact/contact_parameters.h>
@@ -12,6 +13,7 @@
 #include <bfemp/fem/fem_body.h>
 #include <bfemp/grid/grid_state.h>
 #include <bfemp/integrator/substepped_mpm.h>
+#include <bfemp/integrator/time_integrator.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/solver/dof_space.h>
@@ -69,7 +71,7 @@ namespace bfemp
    * every step (doc/cmpm.md); the rest of the step is the same.
    */
   template <int dim>
-  class ImplicitIntegrator
+  class ImplicitIntegrator : public TimeIntegrator<dim>
   {
   public:
     ImplicitIntegrator(
@@ -83,41 +85,40 @@ namespace bfemp
       const TimeParameters::ImplicitScheme              &scheme,
       const SolverParameters                            &solver,
       const ContactParameters                           &contact,
-      SubsteppedMPM<dim>      *substepped_mpm = nullptr,
-      CmpmDiscretization<dim> *cmpm           = nullptr);
+      std::unique_ptr<SubsteppedMPM<dim>> substepped_mpm = nullptr,
+      CmpmDiscretization<dim>            *cmpm           = nullptr);
 
     /**
-     * Advances from @p time to time + dt; throws SimulationError. With
-     * substepped MPM bodies, they take @p substeps explicit substeps.
+     * Advances from step.time to step.time + step.dt; throws
+     * SimulationError. With substepped MPM bodies, they take step.substeps
+     * explicit substeps.
      */
     void
-    step(const double       dt,
-         const double       time,
-         const unsigned int step_number,
-         const unsigned int substeps = 0);
+    step(const TimeStep &step) override;
 
     /** The grid fields of the last step (for output). */
     const GridState<dim> &
-    grid_state() const;
+    grid_state() const override;
 
-    /** Newton statistics of the last step. */
-    const NewtonStatistics &
-    statistics() const;
+    /** Newton statistics of the last step (never nullptr). */
+    const NewtonStatistics *
+    newton_statistics() const override;
 
     /** Unknowns of the last step. */
     unsigned int
-    n_dofs() const;
+    n_dofs() const override;
 
-    /** Contact state at the end of the last step. */
     /**
      * Continues the friction dissipation accumulated over the steps of a
      * checkpointed run (ContactStatistics::accumulated_dissipation).
      */
     void
-    resume_friction_dissipation(const double accumulated);
+    resume_friction_dissipation(const double accumulated) override;
 
-    const ContactStatistics<dim> &
-    contact_statistics() const;
+    /** Contact state at the end of the last step (never nullptr;
+     *  ContactStatistics::active says whether the scene has contact). */
+    const ContactStatistics<dim> *
+    contact_statistics() const override;
 
     /**
      * Particles inside an FEM element or at distance 0 from an FEM
@@ -222,14 +223,18 @@ namespace bfemp
     const Tensor<1, dim>                               gravity;
     const TimeParameters::ImplicitScheme               scheme;
     const bool                                         with_mpm;
-    SubsteppedMPM<dim>                                *substepped_mpm;
-    CmpmDiscretization<dim>                           *cmpm;
+    /** The substepped integrator of the MPM bodies, owned here. */
+    std::unique_ptr<SubsteppedMPM<dim>> owned_substepped_mpm;
+    SubsteppedMPM<dim>                 *substepped_mpm;
+    CmpmDiscretization<dim>            *cmpm;
 
     DofSpace<dim>           dofs;
     const ContactParameters contact_parameters;
     const bool              with_contact;
     const bool              with_friction;
     InertiaTerm<dim>        inertia;
+    /** The hold on weakly seen coarse-node combinations (cMPM, r > 0). */
+    std::unique_ptr<CmpmRegularizationTerm<dim>> cmpm_regularization;
     /** The consistent inertia of cMPM bodies (replaces inertia). */
     std::unique_ptr<CmpmInertiaTerm<dim>> cmpm_inertia;
     FemElasticityTerm<dim>                fem_elasticity;

@@ -5,6 +5,7 @@
 #include <bfemp/grid/grid_state.h>
 #include <bfemp/integrator/explicit_mpm.h>
 #include <bfemp/integrator/macro_velocity_reconstruction.h>
+#include <bfemp/integrator/time_integrator.h>
 #include <bfemp/integrator/time_parameters.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
@@ -42,7 +43,7 @@ namespace bfemp
    * grid nodes' start velocity (doc/substepping.md).
    */
   template <int dim>
-  class SubsteppedMPM
+  class SubsteppedMPM : public TimeIntegrator<dim>
   {
   public:
     SubsteppedMPM(const BackgroundGrid<dim>         &grid,
@@ -53,9 +54,10 @@ namespace bfemp
                   const Tensor<1, dim>              &gravity,
                   const TimeParameters::Substepping &parameters);
 
-    /** A macro step of S substeps from @p time to time + dt (MPM only). */
+    /** A macro step of S = step.substeps substeps from step.time to
+     *  step.time + step.dt (MPM only). */
     void
-    step(const double dt, const double time, const unsigned int substeps);
+    step(const TimeStep &step) override;
 
     /**
      * Runs S substeps, returns the particles to their state at @p time and
@@ -83,7 +85,7 @@ namespace bfemp
 
     /** The grid fields of the last macro step (for output). */
     const GridState<dim> &
-    grid_state() const;
+    grid_state() const override;
 
   private:
     /** Stores x_p^n, v_p^n, C_p^n and F_p^n by particle id. */

@@ -53,6 +53,10 @@ namespace bfemp
     const ParticleSystem<dim> &
     particles() const;
 
+    /** The time integrator, e.g. to inspect the last step's grid fields. */
+    const TimeIntegrator<dim> &
+    integrator() const;
+
     /** Write access, e.g. to set a non-uniform initial state before run(). */
     ParticleSystem<dim> &
     particles();
@@ -111,9 +115,17 @@ namespace bfemp
     void
     advance(const double dt, const double time, const double max_speed);
 
-    /** Builds the integrator the parameters choose. */
+    /**
+     * Builds the integrator the parameters choose: the one place that maps
+     * 'time/integrator' and the scene (FEM bodies, cMPM) to a class.
+     */
     void
     create_integrator();
+
+    /** Throws InputError naming the bodies if particles start inside or on
+     *  an FEM body (BFEMP eq. 15 needs a positive distance). */
+    void
+    check_bodies_apart(ImplicitIntegrator<dim> &implicit) const;
 
     /**
      * The next dt, 0 once the end time is reached; throws if a fixed dt
@@ -192,9 +204,8 @@ namespace bfemp
     /** cMPM's coarse nodes and shape functions (cmpm/enabled). */
     std::unique_ptr<CmpmDiscretization<dim>>   cmpm;
     std::vector<std::unique_ptr<FemBody<dim>>> fem_body_list;
-    std::unique_ptr<ExplicitMPM<dim>>          explicit_integrator;
-    std::unique_ptr<SubsteppedMPM<dim>>        substepped_integrator;
-    std::unique_ptr<ImplicitIntegrator<dim>>   implicit_integrator;
+    /** The integrator 'time/integrator' chooses (create_integrator()). */
+    std::unique_ptr<TimeIntegrator<dim>> time_integrator;
     /** Substeps of the last macro step (substepped integrator). */
     unsigned int last_substeps = 0;
     /** Newton statistics since the last diagnostics row. */
