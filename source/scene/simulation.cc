@@ -1,3 +1,4 @@
+#include <bfemp/base/blas_threads.h>
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/stop_signals.h>
 #include <bfemp/particles/body_sampler.h>
@@ -26,6 +27,7 @@ namespace bfemp
   {
     if (parameters.run.threads > 0)
       MultithreadInfo::set_thread_limit(parameters.run.threads);
+    BlasThreads::configure(parameters.run.blas_threads, parameters.run.threads);
     for (const auto &body : parameters.bodies)
       {
         first_material.push_back(materials.size());
@@ -760,6 +762,8 @@ namespace bfemp
     else
       console << "bfemp: " << dim << "D, " << scene_summary() << "; output in "
               << output_folder << std::endl;
+    if (!run.test_mode && time_integrator->newton_statistics() != nullptr)
+      console << "bfemp: " << BlasThreads::describe() << std::endl;
     if (resumed)
       {
         console << "bfemp: continuing from " << checkpoint_path() << ": step "

@@ -1,3 +1,4 @@
+#include <bfemp/base/blas_threads.h>
 #include <bfemp/base/input_error.h>
 #include <bfemp/solver/cholmod_solver.h>
 
@@ -201,7 +202,11 @@ namespace bfemp
             }
       }
 
-    cholmod_l_factorize(data->matrix, data->factor, &data->common);
+    {
+      // CHOLMOD's flop count of the analysis decides the BLAS threads
+      const BlasThreads::Scope blas(data->common.fl);
+      cholmod_l_factorize(data->matrix, data->factor, &data->common);
+    }
     if (data->common.status == CHOLMOD_NOT_POSDEF ||
         (data->common.status == CHOLMOD_OK &&
          static_cast<std::size_t>(data->factor->minor) < n))

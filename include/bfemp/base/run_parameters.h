@@ -17,6 +17,9 @@ namespace bfemp
     bool         test_mode = false;
     bool         quiet     = false;
     unsigned int threads   = 0;
+    /** `run/BLAS threads`: 0 for `auto` (BlasThreads decides), else the
+     *  BLAS threads of every call. */
+    unsigned int blas_threads = 0;
 
     static void
     declare_parameters(ParameterHandler &prm);
