@@ -556,14 +556,16 @@ namespace bfemp
             // cMPM's inertia is the consistent one over the particles.
             // Coarse nodes whose shape functions the particles see only in
             // combination leave it singular (combinations that vanish at
-            // every particle); a lumped nodal inertia 1e-8 times the nodes'
-            // marks keeps the Newton matrix definite and moves such
+            // every particle); a lumped nodal inertia 1e-8 times the coarse
+            // nodes' marks keeps the Newton matrix definite and moves such
             // combinations with the body. It changes the momentum by at
-            // most 1e-8 of the step's.
-            std::vector<double> regularization(node_mass);
-            for (double &m : regularization)
-              m *= 1e-8;
-            inertia.reinit(regularization, predicted);
+            // most 1e-8 of the step's. FEM nodes keep their own lumped mass
+            // (and with it their gravity).
+            std::vector<double> lumped(node_mass);
+            for (unsigned int node = dofs.n_fem_nodes(); node < dofs.n_nodes();
+                 ++node)
+              lumped[node] *= 1e-8;
+            inertia.reinit(lumped, predicted);
             cmpm_inertia->reinit(dt, scale, gravity);
             if (cmpm_regularization)
               cmpm_regularization->reinit(node_mass);
