@@ -72,19 +72,18 @@ namespace bfemp
   CmpmParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("cmpm");
-    enabled                = prm.get_bool("enabled");
-    const std::string type = prm.get("coarse element type");
-    element_type           = type == "B-spline"      ? ElementType::bspline
-                             : type == "multilinear" ? ElementType::multilinear
-                                                     : ElementType::boundary_bspline;
-    nodes_per_span         = prm.get("coarse node span") == "H" ? 1 : 2;
-    const long n           = prm.get_integer("fine nodes per direction");
-    empty_span_stiffness   = prm.get_double("empty span stiffness");
-    weak_node_regularization =
-      prm.get_double("weak node regularization");
-    local_solve = prm.get("local solve") == "full Newton"
-                    ? LocalSolve::full_newton
-                    : LocalSolve::first_newton_step;
+    enabled                  = prm.get_bool("enabled");
+    const std::string type   = prm.get("coarse element type");
+    element_type             = type == "B-spline"      ? ElementType::bspline
+                               : type == "multilinear" ? ElementType::multilinear
+                                                       : ElementType::boundary_bspline;
+    nodes_per_span           = prm.get("coarse node span") == "H" ? 1 : 2;
+    const long n             = prm.get_integer("fine nodes per direction");
+    empty_span_stiffness     = prm.get_double("empty span stiffness");
+    weak_node_regularization = prm.get_double("weak node regularization");
+    local_solve              = prm.get("local solve") == "full Newton"
+                                 ? LocalSolve::full_newton
+                                 : LocalSolve::first_newton_step;
     prm.leave_subsection();
 
     require_input(n >= 5 && n <= 32,

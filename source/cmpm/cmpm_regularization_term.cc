@@ -51,12 +51,12 @@ namespace bfemp
       }
     const unsigned int n = element.nodes.size();
     mean /= std::max(n, 1u);
-    element.kappa.resize(n);
+    std::vector<double> kappa(n);
     for (unsigned int k = 0; k < n; ++k)
       {
-        element.kappa[k] = weight * std::max(0., mean - masses[k]);
+        kappa[k] = weight * std::max(0., mean - masses[k]);
         element.relative_weight =
-          std::max(element.relative_weight, element.kappa[k] / (weight * mean));
+          std::max(element.relative_weight, kappa[k] / (weight * mean));
       }
 
     // P_e = A (A^T W A)^-1 A^T W, the m_I-weighted fit by the affine basis
@@ -80,12 +80,19 @@ namespace bfemp
     normal.gauss_jordan();
     FullMatrix<double> fit(n, dim + 1);
     A.mmult(fit, normal);
-    element.complement.reinit(n, n);
-    fit.mTmult(element.complement, WA);
+    FullMatrix<double> complement(n, n), kappa_complement(n, n);
+    fit.mTmult(complement, WA);
     for (unsigned int k = 0; k < n; ++k)
       for (unsigned int l = 0; l < n; ++l)
-        element.complement(k, l) =
-          (k == l ? 1. : 0.) - element.complement(k, l);
+        {
+          complement(k, l)       = (k == l ? 1. : 0.) - complement(k, l);
+          kappa_complement(k, l) = kappa[k] * complement(k, l);
+        }
+    // E = 1/2 u^T (1 - P)^T K (1 - P) u per component: the term is quadratic,
+    // so its matrix is formed once per step and serves value, gradient and
+    // Hessian
+    element.stiffness.reinit(n, n);
+    complement.Tmmult(element.stiffness, kappa_complement);
     return element;
   }
 
@@ -140,16 +147,15 @@ namespace bfemp
 
   template <int dim>
   std::vector<Tensor<1, dim>>
-  CmpmRegularizationTerm<dim>::deviation(const Element        &element,
-                                         const Vector<double> &u) const
+  CmpmRegularizationTerm<dim>::force(const Element        &element,
+                                     const Vector<double> &u) const
   {
     const unsigned int          n = element.nodes.size();
-    std::vector<Tensor<1, dim>> w(n), result(n);
-    for (unsigned int k = 0; k < n; ++k)
-      w[k] = DofSpace<dim>::get(u, element.nodes[k]);
+    std::vector<Tensor<1, dim>> result(n);
     for (unsigned int k = 0; k < n; ++k)
       for (unsigned int l = 0; l < n; ++l)
-        result[k] += element.complement(k, l) * w[l];
+        result[k] +=
+          element.stiffness(k, l) * DofSpace<dim>::get(u, element.nodes[l]);
     return result;
   }
 
@@ -162,9 +168,9 @@ namespace bfemp
     double energy = 0.;
     for (const Element &element : elements)
       {
-        const std::vector<Tensor<1, dim>> d = deviation(element, u);
-        for (unsigned int k = 0; k < d.size(); ++k)
-          energy += 0.5 * element.kappa[k] * d[k].norm_square();
+        const std::vector<Tensor<1, dim>> f = force(element, u);
+        for (unsigned int k = 0; k < f.size(); ++k)
+          energy += 0.5 * f[k] * DofSpace<dim>::get(u, element.nodes[k]);
       }
     return energy;
   }
@@ -176,20 +182,12 @@ namespace bfemp
   CmpmRegularizationTerm<dim>::add_gradient(const Vector<double> &u,
                                             Vector<double> &gradient) const
   {
-    // d/dw_l of 1/2 sum_k kappa_k |d_k|^2, d = (1 - P) w:
-    // sum_k (1 - P)_kl kappa_k d_k
     for (const Element &element : elements)
       {
-        const std::vector<Tensor<1, dim>> d = deviation(element, u);
-        const unsigned int                n = element.nodes.size();
-        for (unsigned int l = 0; l < n; ++l)
-          {
-            Tensor<1, dim> g;
-            for (unsigned int k = 0; k < n; ++k)
-              g += element.complement(k, l) * element.kappa[k] * d[k];
-            for (unsigned int c = 0; c < dim; ++c)
-              gradient[dim * element.nodes[l] + c] += g[c];
-          }
+        const std::vector<Tensor<1, dim>> f = force(element, u);
+        for (unsigned int k = 0; k < f.size(); ++k)
+          for (unsigned int c = 0; c < dim; ++c)
+            gradient[dim * element.nodes[k] + c] += f[k][c];
       }
   }
 
@@ -201,21 +199,16 @@ namespace bfemp
                                            SparseMatrix<double> &hessian,
                                            const HessianKind) const
   {
-    // (1 - P)^T K (1 - P) per component: positive semi-definite as it is
+    // the matrix of build_element(), per component: PSD as it is
     for (const Element &element : elements)
       {
         const unsigned int n = element.nodes.size();
-        FullMatrix<double> KC(n, n), block(n, n);
-        for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int l = 0; l < n; ++l)
-            KC(k, l) = element.kappa[k] * element.complement(k, l);
-        element.complement.Tmmult(block, KC);
         for (unsigned int k = 0; k < n; ++k)
           for (unsigned int l = 0; l < n; ++l)
             for (unsigned int c = 0; c < dim; ++c)
               hessian.add(dim * element.nodes[k] + c,
                           dim * element.nodes[l] + c,
-                          block(k, l));
+                          element.stiffness(k, l));
       }
   }
 

@@ -96,24 +96,23 @@ namespace bfemp
     largest_relative_weight() const;
 
   private:
-    /** One element's share: its unknowns, their kappa and 1 - P_e. */
+    /** One element's share: its unknowns and (1 - P_e)^T K (1 - P_e). */
     struct Element
     {
       std::size_t               index = 0;
       std::vector<unsigned int> nodes;
-      std::vector<double>       kappa;
-      FullMatrix<double>        complement;
+      FullMatrix<double>        stiffness;
       double                    relative_weight = 0.;
     };
 
-    /** The element's unknowns, kappa and 1 - P_e (eq. above); no nodes if
-     *  none has a weight. */
+    /** The element's unknowns and matrix (eq. above); no nodes if none has
+     *  a weight. */
     Element
     build_element(const std::array<int, dim> &element) const;
 
-    /** (1 - P_e) u_e of @p element at u: one vector per node. */
+    /** The element's stiffness times its nodal u: dE_e/du_k per node. */
     std::vector<Tensor<1, dim>>
-    deviation(const Element &element, const Vector<double> &u) const;
+    force(const Element &element, const Vector<double> &u) const;
 
     ParticleSystem<dim>           &particles;
     const CmpmDiscretization<dim> &cmpm;
