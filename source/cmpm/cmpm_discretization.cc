@@ -113,28 +113,78 @@ namespace bfemp
 
 
   template <int dim>
+  template <typename ParticleRange>
+  typename CmpmDiscretization<dim>::Element
+  CmpmDiscretization<dim>::element_of(const ParticleRange &cell_particles) const
+  {
+    Element element;
+    element.index  = grid.element_of(cell_particles.begin()->get_location());
+    element.flat   = grid.element_index(element.index);
+    element.corner = grid.element_origin(element.index);
+    return element;
+  }
+
+
+
+  template <int dim>
+  void
+  CmpmDiscretization<dim>::gather(const Element                     &element,
+                                  const std::vector<Tensor<1, dim>> &field,
+                                  std::vector<Tensor<1, dim>>       &fine) const
+  {
+    thread_local std::vector<Tensor<1, dim>> coarse;
+    coarse.resize(grid.n_local_nodes());
+    for (unsigned int I = 0; I < coarse.size(); ++I)
+      coarse[I] = field[grid.global_node(element.index, I)];
+    phi.fine_values(element.flat, coarse, fine);
+  }
+
+
+
+  template <int dim>
   void
   CmpmDiscretization<dim>::particles_to_grid(ParticleSystem<dim> &particles,
                                              GridState<dim>      &state) const
   {
     using Layout = ParticleLayout<dim>;
     state.reinit(grid.node_lattice().n_nodes);
-    particles.for_each_scattering([&](const auto &particle) {
-      thread_local std::vector<CoarseShapeValue<dim>> values;
-      phi.evaluate(particle.get_location(), values);
-      const auto           p = particle.get_properties();
-      const double         m = p[Layout::mass];
-      const Tensor<1, dim> v = Layout::get_vector(p, Layout::velocity);
-      // The averaged scalars sum to one per particle but are negative at
-      // some coarse nodes outside the body (Phi is not positive), so their
-      // row sums are no lumped masses: a node with a negative sum would drop
-      // out of the step and pin its shape functions. The step's mass is the
-      // consistent one of CmpmInertiaTerm; these sums of m_p |Phi_Ip| only
-      // mark which coarse nodes carry particles.
-      for (const CoarseShapeValue<dim> &value : values)
+    // Element by element: the momentum sum_p m_p Phi_Ip^T v_p = p^T (sum_p
+    // m_p B_kp v_p) is formed on the fine patch and condensed once.
+    particles.for_each_cell_scattering([&](const auto &cell_particles) {
+      const Element      element = element_of(cell_particles);
+      const unsigned int r       = grid.n_local_nodes();
+      thread_local std::vector<Tensor<1, dim>> fine_momentum, momentum;
+      thread_local std::vector<Tensor<2, dim>> phi_p;
+      thread_local std::vector<double>         activity;
+      fine_momentum.assign(grid.n_fine(), Tensor<1, dim>());
+      activity.assign(r, 0.);
+      for (const auto &particle : cell_particles)
         {
-          state.mass[value.node] += m * value.value.norm();
-          state.velocity[value.node] += m * transpose(value.value) * v;
+          typename CoarseGrid<dim>::FineStencil B;
+          grid.fine_stencil(Point<dim>(particle.get_location() -
+                                       element.corner),
+                            B);
+          const auto           p = particle.get_properties();
+          const double         m = p[Layout::mass];
+          const Tensor<1, dim> v = Layout::get_vector(p, Layout::velocity);
+          for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
+            fine_momentum[B.node[k]] += (m * B.value[k]) * v;
+          // The averaged scalars sum to one per particle but are negative at
+          // some coarse nodes outside the body (Phi is not positive), so
+          // their row sums are no lumped masses: a node with a negative sum
+          // would drop out of the step and pin its shape functions. The
+          // step's mass is the consistent one of CmpmInertiaTerm; these sums
+          // of m_p |Phi_Ip| only mark which coarse nodes carry particles.
+          phi.values(element.flat, B, phi_p);
+          for (unsigned int I = 0; I < r; ++I)
+            activity[I] += m * phi_p[I].norm();
+        }
+      phi.coarse_forces(element.flat, fine_momentum, momentum);
+      for (unsigned int I = 0; I < r; ++I)
+        {
+          const std::size_t node = grid.global_node(element.index, I);
+          state.mass[node] += activity[I];
+          state.velocity[node] += momentum[I];
         }
     });
   }
@@ -151,36 +201,46 @@ namespace bfemp
     using Layout                  = ParticleLayout<dim>;
     const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
     const bool flip = transfer.scheme == TransferParameters::Scheme::flip;
-    particles.for_each([&](auto &particle) {
-      thread_local std::vector<CoarseShapeValue<dim>> values;
-      const Point<dim> x = particle.get_location();
-      phi.evaluate(x, values);
-      Tensor<1, dim> v_pic, v_old, delta;
-      Tensor<2, dim> grad_u;
-      for (const CoarseShapeValue<dim> &value : values)
-        {
-          const Tensor<1, dim> &u = state.displacement[value.node];
-          v_pic += value.value * state.new_velocity[value.node];
-          if (flip)
-            v_old += value.value * state.velocity[value.node];
-          delta += value.value * u;
-          // grad(Phi_I u_I)_ab = sum_c d(Phi_I)_ac/dx_b u_Ic
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int c = 0; c < dim; ++c)
-              grad_u[a] += u[c] * value.gradient[a][c];
-        }
-      const ArrayView<double> p     = particle.get_properties();
-      Tensor<1, dim>          v_new = v_pic;
+    // Element by element: the coarse fields become fine control values
+    // once (q = p Q), and each particle sums its 3^dim fine functions.
+    particles.for_each_cell([&](const auto &cell_particles) {
+      const Element element = element_of(cell_particles);
+      thread_local std::vector<Tensor<1, dim>> u, v_new, v_start;
+      gather(element, state.displacement, u);
+      gather(element, state.new_velocity, v_new);
       if (flip)
-        v_new = transfer.pic_blend * v_pic +
-                (1. - transfer.pic_blend) *
-                  (Layout::get_vector(p, Layout::velocity) + v_pic - v_old);
-      Layout::set_vector(p, Layout::velocity, v_new);
-      Layout::set_tensor(p,
-                         Layout::deformation_gradient,
-                         (identity + grad_u) *
-                           Layout::get_tensor(p, Layout::deformation_gradient));
-      particle.set_location(x + delta);
+        gather(element, state.velocity, v_start);
+      for (auto &particle : cell_particles)
+        {
+          typename CoarseGrid<dim>::FineStencil B;
+          const Point<dim>                      x = particle.get_location();
+          grid.fine_stencil(Point<dim>(x - element.corner), B);
+          Tensor<1, dim> v_pic, v_old, delta;
+          Tensor<2, dim> grad_u;
+          for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+            {
+              const unsigned int k = B.node[q];
+              v_pic += B.value[q] * v_new[k];
+              if (flip)
+                v_old += B.value[q] * v_start[k];
+              delta += B.value[q] * u[k];
+              grad_u += outer_product(u[k], B.gradient[q]);
+            }
+          const ArrayView<double> p       = particle.get_properties();
+          Tensor<1, dim>          v_new_p = v_pic;
+          if (flip)
+            v_new_p =
+              transfer.pic_blend * v_pic +
+              (1. - transfer.pic_blend) *
+                (Layout::get_vector(p, Layout::velocity) + v_pic - v_old);
+          Layout::set_vector(p, Layout::velocity, v_new_p);
+          Layout::set_tensor(
+            p,
+            Layout::deformation_gradient,
+            (identity + grad_u) *
+              Layout::get_tensor(p, Layout::deformation_gradient));
+          particle.set_location(x + delta);
+        }
     });
   }
 

@@ -1,4 +1,5 @@
 #include <bfemp/cmpm/cmpm_inertia_term.h>
+#include <bfemp/cmpm/element_assembly.h>
 #include <bfemp/particles/particle_layout.h>
 
 #include <algorithm>
@@ -40,31 +41,28 @@ namespace bfemp
 
   template <int dim>
   template <typename ParticleAccessor>
-  void
-  CmpmInertiaTerm<dim>::evaluate(const ParticleAccessor      &particle,
-                                 std::vector<unsigned int>   &nodes,
-                                 std::vector<Tensor<2, dim>> &phi,
-                                 double                      &mass,
-                                 Tensor<1, dim>              &target) const
+  Tensor<1, dim>
+  CmpmInertiaTerm<dim>::target(const ParticleAccessor &particle) const
   {
     using Layout = ParticleLayout<dim>;
-    thread_local std::vector<CoarseShapeValue<dim>> values;
-    cmpm.evaluate(particle.get_location(), values);
-    nodes.clear();
-    phi.clear();
-    for (const CoarseShapeValue<dim> &value : values)
-      {
-        // nodes left out of the step (negligible mass) stay at u = 0
-        const unsigned int node = dofs.grid_node(value.node);
-        if (node == DofSpace<dim>::invalid)
-          continue;
-        nodes.push_back(node);
-        phi.push_back(value.value);
-      }
-    const auto p = particle.get_properties();
-    mass         = p[Layout::mass];
-    target =
-      dt * Layout::get_vector(p, Layout::velocity) + gravity_weight * gravity;
+    return dt *
+             Layout::get_vector(particle.get_properties(), Layout::velocity) +
+           gravity_weight * gravity;
+  }
+
+
+
+  template <int dim>
+  template <typename ParticleAccessor>
+  Tensor<1, dim>
+  CmpmInertiaTerm<dim>::residual(const ParticleAccessor &particle,
+                                 const typename CoarseGrid<dim>::FineStencil &B,
+                                 const std::vector<Tensor<1, dim>> &q) const
+  {
+    Tensor<1, dim> r = -target(particle);
+    for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
+      r += B.value[k] * q[B.node[k]];
+    return r;
   }
 
 
@@ -75,33 +73,11 @@ namespace bfemp
   {
     // All particles of a cell (= coarse element) share its coarse nodes.
     particles.for_each_cell_scattering([&](const auto &cell_particles) {
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<2, dim>> phi;
-      double                      mass;
-      Tensor<1, dim>              target;
-      evaluate(*cell_particles.begin(), nodes, phi, mass, target);
-      for (const unsigned int node : nodes)
-        sparsity.add_row_entries(node, nodes);
+      const CmpmElementAssembly<dim>
+        element(cmpm, dofs, cell_particles.begin()->get_location());
+      for (const unsigned int node : element.unknowns())
+        sparsity.add_row_entries(node, element.unknowns());
     });
-  }
-
-
-
-  template <int dim>
-  template <typename ParticleAccessor>
-  Tensor<1, dim>
-  CmpmInertiaTerm<dim>::residual(const ParticleAccessor      &particle,
-                                 const Vector<double>        &u,
-                                 std::vector<unsigned int>   &nodes,
-                                 std::vector<Tensor<2, dim>> &phi,
-                                 double                      &mass) const
-  {
-    Tensor<1, dim> target;
-    evaluate(particle, nodes, phi, mass, target);
-    Tensor<1, dim> r = -target;
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      r += phi[k] * DofSpace<dim>::get(u, nodes[k]);
-    return r;
   }
 
 
@@ -110,13 +86,23 @@ namespace bfemp
   double
   CmpmInertiaTerm<dim>::value(const Vector<double> &u) const
   {
-    return particles.template sum<double>([&](const auto &particle) {
-      thread_local std::vector<unsigned int>   nodes;
-      thread_local std::vector<Tensor<2, dim>> phi;
-      double                                   mass;
-      const Tensor<1, dim> r = residual(particle, u, nodes, phi, mass);
-      return 0.5 * mass * r.norm_square();
-    });
+    using Layout = ParticleLayout<dim>;
+    return particles.template sum_over_cells<double>(
+      [&](const auto &cell_particles) {
+        const CmpmElementAssembly<dim>
+          element(cmpm, dofs, cell_particles.begin()->get_location());
+        thread_local std::vector<Tensor<1, dim>> q;
+        element.gather(u, q);
+        double energy = 0.;
+        for (const auto &particle : cell_particles)
+          {
+            typename CoarseGrid<dim>::FineStencil B;
+            element.fine_stencil(particle.get_location(), B);
+            energy += 0.5 * particle.get_properties()[Layout::mass] *
+                      residual(particle, B, q).norm_square();
+          }
+        return energy;
+      });
   }
 
 
@@ -125,14 +111,11 @@ namespace bfemp
   double
   CmpmInertiaTerm<dim>::magnitude() const
   {
+    using Layout = ParticleLayout<dim>;
     // the terms summed in value() are of the size of m_p |u^_p|^2
     return particles.template sum<double>([&](const auto &particle) {
-      thread_local std::vector<unsigned int>   nodes;
-      thread_local std::vector<Tensor<2, dim>> phi;
-      double                                   mass;
-      Tensor<1, dim>                           target;
-      evaluate(particle, nodes, phi, mass, target);
-      return 0.5 * mass * target.norm_square();
+      return 0.5 * particle.get_properties()[Layout::mass] *
+             target(particle).norm_square();
     });
   }
 
@@ -143,17 +126,24 @@ namespace bfemp
   CmpmInertiaTerm<dim>::add_gradient(const Vector<double> &u,
                                      Vector<double>       &gradient) const
   {
-    particles.for_each_scattering([&](const auto &particle) {
-      thread_local std::vector<unsigned int>   nodes;
-      thread_local std::vector<Tensor<2, dim>> phi;
-      double                                   mass;
-      const Tensor<1, dim> r = residual(particle, u, nodes, phi, mass);
-      for (unsigned int k = 0; k < nodes.size(); ++k)
+    using Layout = ParticleLayout<dim>;
+    // m_p B_kp r_p on the fine nodes, condensed once per element
+    particles.for_each_cell_scattering([&](const auto &cell_particles) {
+      const CmpmElementAssembly<dim>
+        element(cmpm, dofs, cell_particles.begin()->get_location());
+      thread_local std::vector<Tensor<1, dim>> q, fine_forces;
+      element.gather(u, q);
+      fine_forces.assign(element.n_fine(), Tensor<1, dim>());
+      for (const auto &particle : cell_particles)
         {
-          const Tensor<1, dim> g = mass * (transpose(phi[k]) * r);
-          for (unsigned int c = 0; c < dim; ++c)
-            gradient[dim * nodes[k] + c] += g[c];
+          typename CoarseGrid<dim>::FineStencil B;
+          element.fine_stencil(particle.get_location(), B);
+          const Tensor<1, dim> m_r =
+            particle.get_properties()[Layout::mass] * residual(particle, B, q);
+          for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
+            fine_forces[B.node[k]] += B.value[k] * m_r;
         }
+      element.add_forces(fine_forces, gradient);
     });
   }
 
@@ -165,41 +155,53 @@ namespace bfemp
                                     SparseMatrix<double> &hessian,
                                     const HessianKind) const
   {
-    // sum_p m_p Phi_Ip^T Phi_Jp, summed densely per cell (its particles share
-    // the coarse nodes) and added row by row once per cell
+    using Layout = ParticleLayout<dim>;
+    // the fine consistent mass sum_p m_p B_kp B_lp I over the fine nodes the
+    // element's particles touch, condensed once per element
     particles.for_each_cell_scattering([&](const auto &cell_particles) {
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<2, dim>> phi, blocks;
-      double                      mass;
-      Tensor<1, dim>              target;
+      const CmpmElementAssembly<dim>
+        element(cmpm, dofs, cell_particles.begin()->get_location());
+      thread_local std::vector<int>                                   position;
+      thread_local std::vector<unsigned int>                          nodes;
+      thread_local std::vector<Tensor<2, dim>>                        upper;
+      thread_local std::vector<typename CoarseGrid<dim>::FineStencil> stencils;
+      thread_local std::vector<double>                                masses;
+      stencils.clear();
+      masses.clear();
+      position.assign(element.n_fine(), -1);
       for (const auto &particle : cell_particles)
         {
-          evaluate(particle, nodes, phi, mass, target);
-          const std::size_t r = nodes.size();
-          blocks.resize(r * r);
-          for (unsigned int k = 0; k < r; ++k)
-            for (unsigned int l = 0; l < r; ++l)
-              blocks[k * r + l] += mass * transpose(phi[k]) * phi[l];
+          stencils.emplace_back();
+          element.fine_stencil(particle.get_location(), stencils.back());
+          masses.push_back(particle.get_properties()[Layout::mass]);
+          for (const unsigned int k : stencils.back().node)
+            position[k] = 0;
         }
-      const std::size_t                    r = nodes.size();
-      std::vector<types::global_dof_index> columns(r * dim);
-      std::vector<double>                  row(r * dim);
-      for (unsigned int l = 0; l < r; ++l)
-        for (unsigned int b = 0; b < dim; ++b)
-          columns[dim * l + b] = dim * nodes[l] + b;
-      for (unsigned int k = 0; k < r; ++k)
-        for (unsigned int a = 0; a < dim; ++a)
+      nodes.clear();
+      for (unsigned int k = 0; k < position.size(); ++k)
+        if (position[k] == 0)
           {
-            for (unsigned int l = 0; l < r; ++l)
-              for (unsigned int b = 0; b < dim; ++b)
-                row[dim * l + b] = blocks[k * r + l][a][b];
-            hessian.add(dim * nodes[k] + a,
-                        r * dim,
-                        columns.data(),
-                        row.data(),
-                        false,
-                        true);
+            position[k] = nodes.size();
+            nodes.push_back(k);
           }
+      const std::size_t m = nodes.size();
+      upper.assign(m * m, Tensor<2, dim>());
+      for (unsigned int p = 0; p < stencils.size(); ++p)
+        {
+          const auto &B = stencils[p];
+          for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
+            for (unsigned int l = 0; l < CoarseGrid<dim>::n_stencil; ++l)
+              {
+                const unsigned int i = position[B.node[k]];
+                const unsigned int j = position[B.node[l]];
+                if (i > j)
+                  continue;
+                const double m_BB = masses[p] * B.value[k] * B.value[l];
+                for (unsigned int a = 0; a < dim; ++a)
+                  upper[i * m + j][a][a] += m_BB;
+              }
+        }
+      element.add_stiffness(nodes, upper, hessian);
     });
   }
 

@@ -184,6 +184,39 @@ namespace bfemp
 
   template <int dim>
   void
+  CoarsenedShapeFunctions<dim>::values(
+    const std::size_t                            element,
+    const typename CoarseGrid<dim>::FineStencil &stencil,
+    std::vector<Tensor<2, dim>>                 &phi) const
+  {
+    Assert(is_active(element), ExcInternalError());
+    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const std::vector<Tensor<2, dim>> &p = control[element];
+    // eq. 15 as in evaluate(): the boundary rows are psi_kI I, so their
+    // part is a scalar per coarse node
+    thread_local std::vector<double> boundary;
+    boundary.assign(r, 0.);
+    phi.assign(r, Tensor<2, dim>());
+    for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+      {
+        const double B = stencil.value[q];
+        const int    i = coarse_grid.interior_index(stencil.node[q]);
+        if (i < 0)
+          for (const auto &[I, weight] : psi.row(stencil.node[q]))
+            boundary[I] += B * weight;
+        else
+          for (unsigned int I = 0; I < r; ++I)
+            phi[I] += B * p[i * r + I];
+      }
+    for (unsigned int I = 0; I < r; ++I)
+      for (unsigned int a = 0; a < dim; ++a)
+        phi[I][a][a] += boundary[I];
+  }
+
+
+
+  template <int dim>
+  void
   CoarsenedShapeFunctions<dim>::evaluate(
     const Point<dim>                   &x,
     std::vector<CoarseShapeValue<dim>> &values) const
@@ -237,6 +270,133 @@ namespace bfemp
     const std::size_t element) const
   {
     return control[element];
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::fine_values(
+    const std::size_t                  element,
+    const std::vector<Tensor<1, dim>> &coarse,
+    std::vector<Tensor<1, dim>>       &fine) const
+  {
+    Assert(is_active(element), ExcInternalError());
+    const unsigned int r = coarse_grid.n_local_nodes();
+    AssertDimension(coarse.size(), r);
+    const std::vector<Tensor<2, dim>> &p = control[element];
+    fine.assign(coarse_grid.n_fine(), Tensor<1, dim>());
+    for (unsigned int k = 0; k < fine.size(); ++k)
+      {
+        const int i = coarse_grid.interior_index(k);
+        if (i < 0)
+          for (const auto &[I, weight] : psi.row(k))
+            fine[k] += weight * coarse[I];
+        else
+          for (unsigned int I = 0; I < r; ++I)
+            fine[k] += p[i * r + I] * coarse[I];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::coarse_forces(
+    const std::size_t                  element,
+    const std::vector<Tensor<1, dim>> &fine,
+    std::vector<Tensor<1, dim>>       &coarse) const
+  {
+    Assert(is_active(element), ExcInternalError());
+    AssertDimension(fine.size(), coarse_grid.n_fine());
+    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const std::vector<Tensor<2, dim>> &p = control[element];
+    coarse.assign(r, Tensor<1, dim>());
+    for (unsigned int k = 0; k < fine.size(); ++k)
+      {
+        const int i = coarse_grid.interior_index(k);
+        if (i < 0)
+          for (const auto &[I, weight] : psi.row(k))
+            coarse[I] += weight * fine[k];
+        else
+          for (unsigned int I = 0; I < r; ++I)
+            coarse[I] += transpose(p[i * r + I]) * fine[k];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CoarsenedShapeFunctions<dim>::condense(
+    const std::size_t                  element,
+    const std::vector<unsigned int>   &nodes,
+    const std::vector<Tensor<2, dim>> &upper,
+    std::vector<Tensor<2, dim>>       &coarse) const
+  {
+    Assert(is_active(element), ExcInternalError());
+    const std::size_t m = nodes.size();
+    AssertDimension(upper.size(), m * m);
+    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const std::vector<Tensor<2, dim>> &p = control[element];
+
+    // G = K p, row by row of fine nodes: G[i * r + J] = sum_j K_ij p_jJ
+    thread_local std::vector<Tensor<2, dim>>                G;
+    thread_local std::vector<std::array<unsigned int, dim>> index;
+    G.assign(m * r, Tensor<2, dim>());
+    index.resize(m);
+    for (unsigned int i = 0; i < m; ++i)
+      index[i] = coarse_grid.fine_multi_index(nodes[i]);
+    // G_i += K p_j, where p_j is psi_j I on boundary rows
+    const auto add_product =
+      [&](const Tensor<2, dim> &K, const unsigned int i, const unsigned int j) {
+        Tensor<2, dim> *G_i      = &G[i * r];
+        const int       interior = coarse_grid.interior_index(nodes[j]);
+        if (interior < 0)
+          for (const auto &[J, weight] : psi.row(nodes[j]))
+            G_i[J] += weight * K;
+        else
+          for (unsigned int J = 0; J < r; ++J)
+            G_i[J] += K * p[interior * r + J];
+      };
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = i; j < m; ++j)
+        {
+          bool couples = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            couples = couples && std::abs(static_cast<int>(index[i][d]) -
+                                          static_cast<int>(index[j][d])) <= 2;
+          if (!couples)
+            continue;
+          const Tensor<2, dim> &K_ij = upper[i * m + j];
+          add_product(K_ij, i, j);
+          if (j != i)
+            add_product(transpose(K_ij), j, i);
+        }
+
+    // coarse = p^T G
+    coarse.assign(r * r, Tensor<2, dim>());
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        const Tensor<2, dim> *G_i      = &G[i * r];
+        const int             interior = coarse_grid.interior_index(nodes[i]);
+        if (interior < 0)
+          for (const auto &[I, weight] : psi.row(nodes[i]))
+            for (unsigned int J = 0; J < r; ++J)
+              coarse[I * r + J] += weight * G_i[J];
+        else
+          for (unsigned int I = 0; I < r; ++I)
+            {
+              const Tensor<2, dim> p_iI_T = transpose(p[interior * r + I]);
+              for (unsigned int J = 0; J < r; ++J)
+                coarse[I * r + J] += p_iI_T * G_i[J];
+            }
+      }
+    // p^T K p is symmetric; make it so to the last bit, as the assembled
+    // Hessian of the other terms is
+    for (unsigned int I = 0; I < r; ++I)
+      for (unsigned int J = I + 1; J < r; ++J)
+        coarse[J * r + I] = transpose(coarse[I * r + J]);
   }
 
 

@@ -1,8 +1,10 @@
 #include <bfemp/base/parallel_sum.h>
+#include <bfemp/cmpm/element_assembly.h>
 #include <bfemp/grid/kernel_stencil.h>
 #include <bfemp/material/tangent_projection.h>
 #include <bfemp/solver/determinant_bound.h>
 #include <bfemp/solver/mpm_elasticity_term.h>
+#include <bfemp/solver/node_blocks.h>
 
 #include <deal.II/base/parallel.h>
 
@@ -14,67 +16,77 @@ namespace bfemp
 {
   namespace
   {
-    /**
-     * What the potential needs of one particle on the B-spline grid (the
-     * scalar case of the particle-to-unknowns map, N_ip = w_ip I): its
-     * stencil's unified nodes (nodes without mass carry w = 0 and are
-     * skipped), g^_ip = (F_p^n)^T grad w_ip, so that dF_p/du_i = e_c g^_ip^T
-     * per component c, F_p^n, V_p^0 and the material.
-     */
-    template <int dim, int degree>
-    struct ParticleStencil
+    /** The displacement of node @p node in the field @p u: unified nodes
+     *  of the unknowns, or an element's fine nodes (cMPM). */
+    template <int dim>
+    Tensor<1, dim>
+    nodal(const Vector<double> &u, const unsigned int node)
     {
-      using Kernel                            = KernelStencil<dim, degree>;
+      return DofSpace<dim>::get(u, node);
+    }
+
+    template <int dim>
+    const Tensor<1, dim> &
+    nodal(const std::vector<Tensor<1, dim>> &u, const unsigned int node)
+    {
+      return u[node];
+    }
+
+
+
+    /**
+     * What the potential needs of one particle whose displacement is a sum
+     * of scalar functions times nodal values, u_p = sum_i w_ip u_i (the
+     * scalar case of the particle-to-unknowns map, N_ip = w_ip I): the
+     * stencil's nodes, g^_ip = (F_p^n)^T grad w_ip, so that
+     * dF_p/du_i = e_c g^_ip^T per component c, F_p^n, V_p^0 and the
+     * material. The nodes are unified nodes (the B-spline grid) or the fine
+     * nodes of a cMPM element, whose values are then q = p Q
+     * (CmpmElementAssembly).
+     */
+    template <int dim, unsigned int max_n>
+    struct ScalarStencil
+    {
       using Layout                            = ParticleLayout<dim>;
-      static constexpr unsigned int max_nodes = Kernel::n_nodes;
+      static constexpr unsigned int max_nodes = max_n;
 
       template <typename ParticleAccessor>
-      ParticleStencil(const Lattice<dim>     &lattice,
-                      const DofSpace<dim>    &dofs,
-                      const ParticleAccessor &particle)
+      void
+      set_particle(const ParticleAccessor &particle)
       {
         const auto properties = particle.get_properties();
         start_F  = Layout::get_tensor(properties, Layout::deformation_gradient);
         volume   = properties[Layout::rest_volume];
         material = static_cast<unsigned int>(properties[Layout::material_id]);
-        kernel.reinit(lattice, particle.get_location());
-        const Tensor<2, dim> start_F_transpose = transpose(start_F);
-        for (unsigned int k = 0; k < Kernel::n_nodes; ++k)
-          {
-            const unsigned int node = dofs.grid_node(kernel.node[k]);
-            if (node == DofSpace<dim>::invalid)
-              continue;
-            nodes[n]              = node;
-            mapped_gradients[n++] = start_F_transpose * kernel.gradient[k];
-          }
       }
 
-      /** Particles with the same key have the same nodes (couplings). */
-      std::size_t
-      key() const
+      /** Adds node @p node with kernel gradient @p gradient. */
+      void
+      add_node(const unsigned int node, const Tensor<1, dim> &gradient)
       {
-        return kernel.node[0];
+        nodes[n]              = node;
+        mapped_gradients[n++] = transpose(start_F) * gradient;
       }
 
       /** F_p(u) = F_p^n + sum_i u_i g^_ip^T (eq. 25 in displacements). */
+      template <typename Field>
       Tensor<2, dim>
-      deformation_gradient(const Vector<double> &u) const
+      deformation_gradient(const Field &u) const
       {
         Tensor<2, dim> F = start_F;
         for (unsigned int k = 0; k < n; ++k)
-          F +=
-            outer_product(DofSpace<dim>::get(u, nodes[k]), mapped_gradients[k]);
+          F += outer_product(nodal<dim>(u, nodes[k]), mapped_gradients[k]);
         return F;
       }
 
       /** dF_p along the nodal direction p. */
+      template <typename Field>
       Tensor<2, dim>
-      direction(const Vector<double> &p) const
+      direction(const Field &p) const
       {
         Tensor<2, dim> dF;
         for (unsigned int k = 0; k < n; ++k)
-          dF +=
-            outer_product(DofSpace<dim>::get(p, nodes[k]), mapped_gradients[k]);
+          dF += outer_product(nodal<dim>(p, nodes[k]), mapped_gradients[k]);
         return dF;
       }
 
@@ -116,10 +128,9 @@ namespace bfemp
             block[a][b] += A_k[a][b] * mapped_gradients[l];
       }
 
-      Kernel         kernel;
       unsigned int   n = 0;
-      unsigned int   nodes[Kernel::n_nodes];
-      Tensor<1, dim> mapped_gradients[Kernel::n_nodes];
+      unsigned int   nodes[max_n];
+      Tensor<1, dim> mapped_gradients[max_n];
       Tensor<2, dim> start_F;
       double         volume   = 0.;
       unsigned int   material = 0;
@@ -127,118 +138,60 @@ namespace bfemp
 
 
 
-    /**
-     * The same for cMPM (seed 002), the matrix-valued case of the
-     * particle-to-unknowns map: u_p = sum_I Phi_I Q_I, so
-     * F_p(u) = (I + sum_I grad(Phi_I u_I)) F_p^n and
-     * dF_ab/du_Ic = D_I[a][b][c] = sum_e d(Phi_I)_ac/dx_e (F_p^n)_eb.
-     */
-    template <int dim>
-    struct CmpmParticleStencil
+    /** A particle on the B-spline grid: the kernel's nodes that are
+     *  unknowns (nodes without mass carry w = 0 and are skipped). */
+    template <int dim, int degree>
+    struct ParticleStencil
+      : ScalarStencil<dim, KernelStencil<dim, degree>::n_nodes>
     {
-      using Layout                            = ParticleLayout<dim>;
-      static constexpr unsigned int max_nodes = dim == 2 ? 25 : 125;
+      using Kernel = KernelStencil<dim, degree>;
 
       template <typename ParticleAccessor>
-      CmpmParticleStencil(const CmpmDiscretization<dim> &cmpm,
-                          const DofSpace<dim>           &dofs,
-                          const ParticleAccessor        &particle)
+      ParticleStencil(const Lattice<dim>     &lattice,
+                      const DofSpace<dim>    &dofs,
+                      const ParticleAccessor &particle)
       {
-        const auto properties = particle.get_properties();
-        start_F  = Layout::get_tensor(properties, Layout::deformation_gradient);
-        volume   = properties[Layout::rest_volume];
-        material = static_cast<unsigned int>(properties[Layout::material_id]);
-        thread_local std::vector<CoarseShapeValue<dim>> values;
-        cmpm.evaluate(particle.get_location(), values);
-        first_node = values.front().node;
-        nodes.reserve(values.size());
-        D.reserve(values.size());
-        for (const CoarseShapeValue<dim> &value : values)
+        this->set_particle(particle);
+        kernel.reinit(lattice, particle.get_location());
+        for (unsigned int k = 0; k < Kernel::n_nodes; ++k)
           {
-            const unsigned int node = dofs.grid_node(value.node);
-            if (node == DofSpace<dim>::invalid)
-              continue;
-            Tensor<3, dim> D_I;
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const Tensor<1, dim> g =
-                    transpose(start_F) * value.gradient[a][c];
-                  for (unsigned int b = 0; b < dim; ++b)
-                    D_I[a][b][c] = g[b];
-                }
-            nodes.push_back(node);
-            D.push_back(D_I);
+            const unsigned int node = dofs.grid_node(kernel.node[k]);
+            if (node != DofSpace<dim>::invalid)
+              this->add_node(node, kernel.gradient[k]);
           }
-        n = nodes.size();
       }
 
+      /** Particles with the same key have the same nodes (couplings). */
       std::size_t
       key() const
       {
-        return first_node;
+        return kernel.node[0];
       }
 
-      Tensor<2, dim>
-      deformation_gradient(const Vector<double> &u) const
+      Kernel kernel;
+    };
+
+
+
+    /**
+     * A particle of a cMPM element on the element's fine patch: its 3^dim
+     * fine functions B_k, whose nodal values are the element's fine control
+     * values q = p Q (Phi_I = sum_k B_k p_kI, seed 002 eq. 15), so that
+     * F_p(u) = (I + sum_I grad(Phi_I u_I)) F_p^n = F_p^n + sum_k q_k g^_k^T.
+     */
+    template <int dim>
+    struct FineParticleStencil : ScalarStencil<dim, CoarseGrid<dim>::n_stencil>
+    {
+      template <typename ParticleAccessor>
+      FineParticleStencil(const CmpmElementAssembly<dim> &element,
+                          const ParticleAccessor         &particle)
       {
-        return start_F + direction(u);
+        this->set_particle(particle);
+        typename CoarseGrid<dim>::FineStencil fine;
+        element.fine_stencil(particle.get_location(), fine);
+        for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
+          this->add_node(fine.node[k], fine.gradient[k]);
       }
-
-      Tensor<2, dim>
-      direction(const Vector<double> &p) const
-      {
-        Tensor<2, dim> dF;
-        for (unsigned int k = 0; k < n; ++k)
-          dF += D[k] * DofSpace<dim>::get(p, nodes[k]);
-        return dF;
-      }
-
-      /** f_c = sum_ab P_ab D_k[a][b][c]. */
-      Tensor<1, dim>
-      force(const unsigned int k, const Tensor<2, dim> &P) const
-      {
-        Tensor<1, dim> f;
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            f += P[a][b] * D[k][a][b];
-        return f;
-      }
-
-      /** A_k[c][a'][b'] = w sum_ab D_k[a][b][c] A[a][b][a'][b']. */
-      Tensor<3, dim>
-      first_contraction(const unsigned int    k,
-                        const Tensor<4, dim> &A,
-                        const double          weight) const
-      {
-        Tensor<3, dim> A_k;
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int b = 0; b < dim; ++b)
-              if (D[k][a][b][c] != 0.)
-                A_k[c] += (weight * D[k][a][b][c]) * A[a][b];
-        return A_k;
-      }
-
-      /** block[c][d] += sum_ab A_k[c][a][b] D_l[a][b][d]. */
-      void
-      add_block(const Tensor<3, dim> &A_k,
-                const unsigned int    l,
-                Tensor<2, dim>       &block) const
-      {
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int b = 0; b < dim; ++b)
-              block[c] += A_k[c][a][b] * D[l][a][b];
-      }
-
-      std::size_t                 first_node = 0;
-      unsigned int                n          = 0;
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<3, dim>> D;
-      Tensor<2, dim>              start_F;
-      double                      volume   = 0.;
-      unsigned int                material = 0;
     };
 
 
@@ -304,32 +257,19 @@ namespace bfemp
             s.add_block(A_k[k], l, blocks[local[k] * nodes.size() + local[l]]);
       }
 
-      /** Adds the rows of all union nodes, the lower blocks mirrored. */
+      /** Adds the rows of all union nodes, the lower blocks mirrored.
+       *  Union nodes that no particle couples have zero blocks, which
+       *  SparseMatrix::add accepts outside the pattern. */
       void
-      add_to(SparseMatrix<double> &hessian)
+      add_to(SparseMatrix<double> &hessian) const
       {
         const std::size_t m = nodes.size();
-        columns.resize(m * dim);
-        values.resize(m * dim);
-        for (unsigned int j = 0; j < m; ++j)
-          for (unsigned int b = 0; b < dim; ++b)
-            columns[dim * j + b] = dim * nodes[j] + b;
-        // Union nodes that no particle couples have zero blocks, which
-        // SparseMatrix::add accepts outside the pattern.
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int a = 0; a < dim; ++a)
-            {
-              for (unsigned int j = 0; j < m; ++j)
-                for (unsigned int b = 0; b < dim; ++b)
-                  values[dim * j + b] =
-                    j >= i ? blocks[i * m + j][a][b] : blocks[j * m + i][b][a];
-              hessian.add(dim * nodes[i] + a,
-                          m * dim,
-                          columns.data(),
-                          values.data(),
-                          false,
-                          true);
-            }
+        add_node_blocks<dim>(
+          nodes,
+          [&](const unsigned int i, const unsigned int j) {
+            return j >= i ? blocks[i * m + j] : transpose(blocks[j * m + i]);
+          },
+          hessian);
       }
 
       std::vector<Stencil> stencils;
@@ -340,9 +280,6 @@ namespace bfemp
       /** Block (i, j) of union nodes i <= j at i * nodes.size() + j. */
       std::vector<Tensor<2, dim>> blocks;
       std::vector<Tensor<3, dim>> A_k;
-      /** One matrix row of the cell, as passed to SparseMatrix::add. */
-      std::vector<types::global_dof_index> columns;
-      std::vector<double>                  values;
     };
 
 
@@ -373,28 +310,6 @@ namespace bfemp
 
 
 
-    /** Builds the cMPM stencil of a particle. */
-    template <int dim>
-    struct CmpmStencilMaker
-    {
-      using Stencil = CmpmParticleStencil<dim>;
-
-      template <typename ParticleAccessor>
-      Stencil
-      operator()(const ParticleAccessor &particle) const
-      {
-        return Stencil(cmpm, dofs, particle);
-      }
-
-      std::size_t
-      n_keys() const
-      {
-        return cmpm.node_lattice().n_nodes;
-      }
-
-      const CmpmDiscretization<dim> &cmpm;
-      const DofSpace<dim>           &dofs;
-    };
   } // namespace
 
   template <int dim>
@@ -428,12 +343,8 @@ namespace bfemp
   template <int dim>
   template <typename Function>
   decltype(auto)
-  MpmElasticityTerm<dim>::with_stencil(const Function &f) const
+  MpmElasticityTerm<dim>::with_kernel(const Function &f) const
   {
-    // The particle-to-unknowns map: cMPM's matrix-valued Phi or the grid's
-    // B-spline kernel. Everything below is written once for both.
-    if (cmpm != nullptr)
-      return f(CmpmStencilMaker<dim>{*cmpm, dofs});
     return dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
       return f(
         KernelStencilMaker<dim, decltype(degree)::value>{grid.lattice(), dofs});
@@ -441,40 +352,131 @@ namespace bfemp
   }
 
   template <int dim>
-  template <typename Maker>
+  template <typename Function>
   void
-  MpmElasticityTerm<dim>::add_couplings(const Maker  &make_stencil,
-                                        NodeSparsity &sparsity) const
+  MpmElasticityTerm<dim>::for_each_element(const Vector<double> &u,
+                                           const Function       &f) const
   {
-    // Particles with the same stencil add the same clique; add each once.
-    // Stencil nodes of particles in stripes two apart never coincide, so
-    // the scattering loop may mark and fill rows without locks.
-    std::vector<char> done(make_stencil.n_keys(), 0);
-    particles.for_each_scattering([&](const auto &particle) {
-      const auto        s     = make_stencil(particle);
-      const std::size_t first = s.key();
-      if (done[first])
-        return;
-      done[first] = 1;
-      const std::vector<unsigned int> clique(std::begin(s.nodes),
-                                             std::begin(s.nodes) + s.n);
-      for (unsigned int k = 0; k < s.n; ++k)
-        sparsity.add_row_entries(s.nodes[k], clique);
+    particles.for_each_cell_scattering([&](const auto &cell_particles) {
+      const CmpmElementAssembly<dim>
+        element(*cmpm, dofs, cell_particles.begin()->get_location());
+      thread_local std::vector<Tensor<1, dim>> q;
+      element.gather(u, q);
+      f(element, q, cell_particles);
     });
   }
 
   template <int dim>
-  template <typename Maker>
-  double
-  MpmElasticityTerm<dim>::value(const Maker          &make_stencil,
-                                const Vector<double> &u) const
+  template <typename Result, typename Function>
+  Result
+  MpmElasticityTerm<dim>::sum_over_elements(const Vector<double> &u,
+                                            const Function       &f) const
   {
-    return scale * particles.template sum<double>([&](const auto &particle) {
-      const auto           s = make_stencil(particle);
-      const Tensor<2, dim> F = s.deformation_gradient(u);
-      if (!(determinant(F) > 0.))
-        return std::numeric_limits<double>::infinity();
-      return s.volume * materials[s.material]->energy_density(F);
+    return particles.template sum_over_cells<Result>(
+      [&](const auto &cell_particles) {
+        const CmpmElementAssembly<dim>
+          element(*cmpm, dofs, cell_particles.begin()->get_location());
+        thread_local std::vector<Tensor<1, dim>> q;
+        element.gather(u, q);
+        Result result = Result();
+        for (const auto &particle : cell_particles)
+          result += f(FineParticleStencil<dim>(element, particle), q);
+        return result;
+      });
+  }
+
+  template <int dim>
+  template <typename Stencil, typename Field>
+  double
+  MpmElasticityTerm<dim>::particle_energy(const Stencil &s,
+                                          const Field   &u) const
+  {
+    const Tensor<2, dim> F = s.deformation_gradient(u);
+    if (!(determinant(F) > 0.))
+      return std::numeric_limits<double>::infinity();
+    return s.volume * materials[s.material]->energy_density(F);
+  }
+
+  template <int dim>
+  template <typename Stencil, typename Field, typename Sink>
+  void
+  MpmElasticityTerm<dim>::add_particle_forces(const Stencil &s,
+                                              const Field   &u,
+                                              const Sink    &sink) const
+  {
+    // dE/du_k = s V_p^0 P(F_p) : dF_p/du_k.
+    const Tensor<2, dim> weighted_P =
+      scale * s.volume *
+      materials[s.material]->first_piola_kirchhoff(s.deformation_gradient(u));
+    for (unsigned int k = 0; k < s.n; ++k)
+      sink(s.nodes[k], s.force(k, weighted_P));
+  }
+
+  template <int dim>
+  template <typename Cell, typename Field>
+  void
+  MpmElasticityTerm<dim>::add_particle_blocks(Cell             &cell,
+                                              const Field      &u,
+                                              const HessianKind kind) const
+  {
+    for (unsigned int p = 0; p < cell.stencils.size(); ++p)
+      {
+        const auto &s = cell.stencils[p];
+        cell.add_particle(
+          p,
+          materials[s.material]->tangent(s.deformation_gradient(u),
+                                         kind == HessianKind::projected),
+          scale * s.volume);
+      }
+  }
+
+  template <int dim>
+  void
+  MpmElasticityTerm<dim>::add_couplings(NodeSparsity &sparsity) const
+  {
+    if (cmpm != nullptr)
+      {
+        // every particle of a cMPM element couples all its unknowns
+        particles.for_each_cell_scattering([&](const auto &cell_particles) {
+          const CmpmElementAssembly<dim>
+            element(*cmpm, dofs, cell_particles.begin()->get_location());
+          for (const unsigned int node : element.unknowns())
+            sparsity.add_row_entries(node, element.unknowns());
+        });
+        return;
+      }
+    with_kernel([&](const auto &make_stencil) {
+      // Particles with the same stencil add the same clique; add each once.
+      // Stencil nodes of particles in stripes two apart never coincide, so
+      // the scattering loop may mark and fill rows without locks.
+      std::vector<char> done(make_stencil.n_keys(), 0);
+      particles.for_each_scattering([&](const auto &particle) {
+        const auto        s     = make_stencil(particle);
+        const std::size_t first = s.key();
+        if (done[first])
+          return;
+        done[first] = 1;
+        const std::vector<unsigned int> clique(std::begin(s.nodes),
+                                               std::begin(s.nodes) + s.n);
+        for (unsigned int k = 0; k < s.n; ++k)
+          sparsity.add_row_entries(s.nodes[k], clique);
+      });
+    });
+  }
+
+  template <int dim>
+  double
+  MpmElasticityTerm<dim>::value(const Vector<double> &u) const
+  {
+    if (cmpm != nullptr)
+      return scale *
+             sum_over_elements<double>(u, [&](const auto &s, const auto &q) {
+               return particle_energy(s, q);
+             });
+    return with_kernel([&](const auto &make_stencil) {
+      return scale * particles.template sum<double>([&](const auto &particle) {
+        return particle_energy(make_stencil(particle), u);
+      });
     });
   }
 
@@ -492,112 +494,40 @@ namespace bfemp
   }
 
   template <int dim>
-  template <typename Maker>
-  void
-  MpmElasticityTerm<dim>::add_gradient(const Maker          &make_stencil,
-                                       const Vector<double> &u,
-                                       Vector<double>       &gradient) const
-  {
-    // dE/du_k = s V_p^0 P(F_p) : dF_p/du_k.
-    particles.for_each_scattering([&](const auto &particle) {
-      const auto           s = make_stencil(particle);
-      const Tensor<2, dim> weighted_P =
-        scale * s.volume *
-        materials[s.material]->first_piola_kirchhoff(s.deformation_gradient(u));
-      for (unsigned int k = 0; k < s.n; ++k)
-        {
-          const Tensor<1, dim> f = s.force(k, weighted_P);
-          for (unsigned int c = 0; c < dim; ++c)
-            gradient[dim * s.nodes[k] + c] += f[c];
-        }
-    });
-  }
-
-  template <int dim>
-  template <typename Maker>
-  void
-  MpmElasticityTerm<dim>::add_hessian(const Maker          &make_stencil,
-                                      const Vector<double> &u,
-                                      SparseMatrix<double> &hessian,
-                                      const HessianKind     kind) const
-  {
-    // The particles of one cell share most of their stencil nodes, so their
-    // blocks are summed in a dense matrix over the union of the stencils and
-    // each of its rows is added to the sparse matrix once per cell: a
-    // sparse row add walks the whole matrix row, whatever the number of
-    // entries added (per particle it was the dominant cost in 3D).
-    using Stencil = typename Maker::Stencil;
-    particles.for_each_cell_scattering([&](const auto &cell_particles) {
-      thread_local CellHessian<dim, Stencil> cell;
-      cell.reinit(make_stencil, cell_particles);
-      for (unsigned int p = 0; p < cell.stencils.size(); ++p)
-        {
-          const Stencil &s = cell.stencils[p];
-          cell.add_particle(
-            p,
-            materials[s.material]->tangent(s.deformation_gradient(u),
-                                           kind == HessianKind::projected),
-            scale * s.volume);
-        }
-      cell.add_to(hessian);
-    });
-  }
-
-  template <int dim>
-  template <typename Maker>
-  double
-  MpmElasticityTerm<dim>::step_bound(const Maker          &make_stencil,
-                                     const Vector<double> &u,
-                                     const Vector<double> &p) const
-  {
-    // det F_p(u + t p) = det(F_p(u) + t dF_p(p)): F_p is linear in u, so a
-    // polynomial of degree dim in t.
-    return particles
-      .template sum<Minimum>([&](const auto &particle) {
-        const auto s = make_stencil(particle);
-        Minimum    m;
-        m += determinant_step_bound<dim>(s.deformation_gradient(u),
-                                         s.direction(p));
-        return m;
-      })
-      .value;
-  }
-
-  template <int dim>
-  template <typename Maker>
-  double
-  MpmElasticityTerm<dim>::minimum_determinant(const Maker &make_stencil,
-                                              const Vector<double> &u) const
-  {
-    return particles
-      .template sum<Minimum>([&](const auto &particle) {
-        Minimum m;
-        m += determinant(make_stencil(particle).deformation_gradient(u));
-        return m;
-      })
-      .value;
-  }
-
-  template <int dim>
-  void
-  MpmElasticityTerm<dim>::add_couplings(NodeSparsity &sparsity) const
-  {
-    with_stencil([&](const auto &make) { add_couplings(make, sparsity); });
-  }
-
-  template <int dim>
-  double
-  MpmElasticityTerm<dim>::value(const Vector<double> &u) const
-  {
-    return with_stencil([&](const auto &make) { return value(make, u); });
-  }
-
-  template <int dim>
   void
   MpmElasticityTerm<dim>::add_gradient(const Vector<double> &u,
                                        Vector<double>       &gradient) const
   {
-    with_stencil([&](const auto &make) { add_gradient(make, u, gradient); });
+    const auto add_to_gradient = [&](const unsigned int    node,
+                                     const Tensor<1, dim> &f) {
+      for (unsigned int c = 0; c < dim; ++c)
+        gradient[dim * node + c] += f[c];
+    };
+    if (cmpm != nullptr)
+      {
+        // the particles' forces on the element's fine nodes, condensed
+        // to the coarse nodes once per element (f_alpha = p^T f)
+        for_each_element(
+          u,
+          [&](const auto &element, const auto &q, const auto &cell_particles) {
+            thread_local std::vector<Tensor<1, dim>> fine_forces;
+            fine_forces.assign(element.n_fine(), Tensor<1, dim>());
+            for (const auto &particle : cell_particles)
+              add_particle_forces(FineParticleStencil<dim>(element, particle),
+                                  q,
+                                  [&](const unsigned int    k,
+                                      const Tensor<1, dim> &f) {
+                                    fine_forces[k] += f;
+                                  });
+            element.add_forces(fine_forces, gradient);
+          });
+        return;
+      }
+    with_kernel([&](const auto &make_stencil) {
+      particles.for_each_scattering([&](const auto &particle) {
+        add_particle_forces(make_stencil(particle), u, add_to_gradient);
+      });
+    });
   }
 
   template <int dim>
@@ -606,8 +536,38 @@ namespace bfemp
                                       SparseMatrix<double> &hessian,
                                       const HessianKind     kind) const
   {
-    with_stencil(
-      [&](const auto &make) { add_hessian(make, u, hessian, kind); });
+    // The particles of one cell share most of their stencil nodes, so their
+    // blocks are summed in a dense matrix over the union of the stencils and
+    // each of its rows is added to the sparse matrix once per cell: a
+    // sparse row add walks the whole matrix row, whatever the number of
+    // entries added (per particle it was the dominant cost in 3D).
+    if (cmpm != nullptr)
+      {
+        // on the element's fine patch, condensed once per element
+        // (K_alpha = p^T K p)
+        for_each_element(
+          u,
+          [&](const auto &element, const auto &q, const auto &cell_particles) {
+            thread_local CellHessian<dim, FineParticleStencil<dim>> cell;
+            cell.reinit(
+              [&](const auto &particle) {
+                return FineParticleStencil<dim>(element, particle);
+              },
+              cell_particles);
+            add_particle_blocks(cell, q, kind);
+            element.add_stiffness(cell.nodes, cell.blocks, hessian);
+          });
+        return;
+      }
+    with_kernel([&](const auto &make_stencil) {
+      using Stencil = typename std::decay_t<decltype(make_stencil)>::Stencil;
+      particles.for_each_cell_scattering([&](const auto &cell_particles) {
+        thread_local CellHessian<dim, Stencil> cell;
+        cell.reinit(make_stencil, cell_particles);
+        add_particle_blocks(cell, u, kind);
+        cell.add_to(hessian);
+      });
+    });
   }
 
   template <int dim>
@@ -615,16 +575,54 @@ namespace bfemp
   MpmElasticityTerm<dim>::step_bound(const Vector<double> &u,
                                      const Vector<double> &p) const
   {
-    return with_stencil(
-      [&](const auto &make) { return step_bound(make, u, p); });
+    // det F_p(u + t p) = det(F_p(u) + t dF_p(p)): F_p is linear in u, so a
+    // polynomial of degree dim in t.
+    const auto bound = [](const auto &s, const auto &u_s, const auto &p_s) {
+      Minimum m;
+      m += determinant_step_bound<dim>(s.deformation_gradient(u_s),
+                                       s.direction(p_s));
+      return m;
+    };
+    if (cmpm != nullptr)
+      return particles
+        .template sum_over_cells<Minimum>([&](const auto &cell_particles) {
+          const CmpmElementAssembly<dim>
+            element(*cmpm, dofs, cell_particles.begin()->get_location());
+          thread_local std::vector<Tensor<1, dim>> q, q_p;
+          element.gather(u, q);
+          element.gather(p, q_p);
+          Minimum m;
+          for (const auto &particle : cell_particles)
+            m += bound(FineParticleStencil<dim>(element, particle), q, q_p);
+          return m;
+        })
+        .value;
+    return with_kernel([&](const auto &make_stencil) {
+      return particles
+        .template sum<Minimum>([&](const auto &particle) {
+          return bound(make_stencil(particle), u, p);
+        })
+        .value;
+    });
   }
 
   template <int dim>
   double
   MpmElasticityTerm<dim>::minimum_determinant(const Vector<double> &u) const
   {
-    return with_stencil(
-      [&](const auto &make) { return minimum_determinant(make, u); });
+    const auto det = [](const auto &s, const auto &u_s) {
+      Minimum m;
+      m += determinant(s.deformation_gradient(u_s));
+      return m;
+    };
+    if (cmpm != nullptr)
+      return sum_over_elements<Minimum>(u, det).value;
+    return with_kernel([&](const auto &make_stencil) {
+      return particles
+        .template sum<Minimum>(
+          [&](const auto &particle) { return det(make_stencil(particle), u); })
+        .value;
+    });
   }
 
   template class MpmElasticityTerm<2>;

@@ -11,6 +11,11 @@
 //   of unity: no net internal force);
 // - the consistent inertia over the particles (CmpmInertiaTerm): gradient
 //   and Hessian the same way; both Hessians PSD (2D eigenvalues);
+// - both terms against the direct sums over the particles through the
+//   matrix-valued Phi_I and grad Phi_I (CmpmDiscretization::evaluate): the
+//   terms integrate on each element's fine patch and condense with p once
+//   per element, which must give the same value, gradient and Hessian to
+//   round-off;
 // - P2G and G2P through Phi: P2G keeps the total momentum, and a uniform
 //   coarse velocity V with u = dt V moves every particle by dt V with
 //   velocity V and leaves F_p unchanged.
@@ -133,6 +138,128 @@ namespace
     IncrementalPotential<dim>                   potential_inertia;
   };
 
+  /**
+   * The two terms' value, gradient and Hessian summed particle by particle
+   * through the matrix-valued shape functions, the definition (seed 002
+   * eqs. 15-16; BFEMP eq. 22 with F_p(u) = (I + sum_I grad(Phi_I u_I))
+   * F_p^n): the reference of the element-condensed assembly.
+   */
+  template <int dim>
+  struct DirectSums
+  {
+    double             elastic_energy = 0., kinetic_energy = 0.;
+    Vector<double>     elastic_gradient, kinetic_gradient;
+    FullMatrix<double> elastic_hessian, kinetic_hessian;
+  };
+
+  template <int dim>
+  DirectSums<dim>
+  direct_sums(Scene<dim> &scene, const Vector<double> &u)
+  {
+    using Layout = ParticleLayout<dim>;
+    DirectSums<dim>    sums;
+    const unsigned int n = u.size();
+    sums.elastic_gradient.reinit(n);
+    sums.kinetic_gradient.reinit(n);
+    sums.elastic_hessian.reinit(n, n);
+    sums.kinetic_hessian.reinit(n, n);
+    std::vector<CoarseShapeValue<dim>> values;
+    for (const auto &particle : scene.particles.handler())
+      {
+        scene.cmpm.evaluate(particle.get_location(), values);
+        const auto           p = particle.get_properties();
+        const Tensor<2, dim> F_n =
+          Layout::get_tensor(p, Layout::deformation_gradient);
+        const Material<dim> &material =
+          *scene.materials[static_cast<unsigned int>(p[Layout::material_id])];
+        // dF_ab/du_Ic = sum_e d(Phi_I)_ac/dx_e (F_n)_eb, and Phi_I itself
+        std::vector<unsigned int>   dofs;
+        std::vector<Tensor<2, dim>> dF, Phi;
+        for (const CoarseShapeValue<dim> &value : values)
+          {
+            const unsigned int node = scene.dofs.grid_node(value.node);
+            if (node == DofSpace<dim>::invalid)
+              continue;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                Tensor<2, dim> D;
+                for (unsigned int a = 0; a < dim; ++a)
+                  D[a] = transpose(F_n) * value.gradient[a][c];
+                Tensor<2, dim> Phi_c;
+                for (unsigned int a = 0; a < dim; ++a)
+                  Phi_c[a][0] = value.value[a][c];
+                dofs.push_back(dim * node + c);
+                dF.push_back(D);
+                Phi.push_back(Phi_c);
+              }
+          }
+        Tensor<2, dim> F = F_n;
+        Tensor<1, dim> r = -(1e-2 * Layout::get_vector(p, Layout::velocity));
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            F += u[dofs[i]] * dF[i];
+            for (unsigned int a = 0; a < dim; ++a)
+              r[a] += u[dofs[i]] * Phi[i][a][0];
+          }
+        const double         V = p[Layout::rest_volume];
+        const double         m = p[Layout::mass];
+        const Tensor<2, dim> P = material.first_piola_kirchhoff(F);
+        const Tensor<4, dim> A = material.tangent(F, true);
+        sums.elastic_energy += V * material.energy_density(F);
+        sums.kinetic_energy += 0.5 * m * r.norm_square();
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            sums.elastic_gradient[dofs[i]] += V * scalar_product(P, dF[i]);
+            double Phi_r = 0.;
+            for (unsigned int a = 0; a < dim; ++a)
+              Phi_r += Phi[i][a][0] * r[a];
+            sums.kinetic_gradient[dofs[i]] += m * Phi_r;
+            const Tensor<2, dim> A_dF = double_contract<2, 0, 3, 1>(A, dF[i]);
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              {
+                sums.elastic_hessian(dofs[i], dofs[j]) +=
+                  V * scalar_product(A_dF, dF[j]);
+                double Phi_Phi = 0.;
+                for (unsigned int a = 0; a < dim; ++a)
+                  Phi_Phi += Phi[i][a][0] * Phi[j][a][0];
+                sums.kinetic_hessian(dofs[i], dofs[j]) += m * Phi_Phi;
+              }
+          }
+      }
+    return sums;
+  }
+
+  /** Compares a term with its direct sums; returns the largest relative
+   *  difference of value, gradient and Hessian. */
+  template <int dim>
+  double
+  compare_with_direct(const std::string         &what,
+                      const EnergyTerm<dim>     &term,
+                      IncrementalPotential<dim> &potential,
+                      const Vector<double>      &u,
+                      const double               energy,
+                      const Vector<double>      &gradient,
+                      const FullMatrix<double>  &hessian)
+  {
+    Vector<double> g(u.size());
+    term.add_gradient(u, g);
+    const double value_error =
+      std::abs(term.value(u) - energy) / std::abs(energy);
+    const double gradient_error = bfemp_tests::relative_difference(g, gradient);
+    const double hessian_error =
+      bfemp_tests::relative_difference(bfemp_tests::dense(potential.hessian(u)),
+                                       hessian);
+    std::cout << what << " against the direct sums through Phi: value "
+              << value_error << ", gradient " << gradient_error << ", Hessian "
+              << hessian_error << std::endl;
+    const double largest =
+      std::max({value_error, gradient_error, hessian_error});
+    check(largest < 1e-11,
+          what + ": value, gradient and Hessian equal the direct sums "
+                 "through Phi to 1e-11");
+    return largest;
+  }
+
   template <int dim>
   void
   test()
@@ -157,6 +284,25 @@ namespace
                                  u,
                                  1e-7,
                                  random_numbers);
+
+    // the element-condensed assembly against the direct sums
+    {
+      const DirectSums<dim> sums = direct_sums(scene, u);
+      compare_with_direct<dim>(name + "cMPM elasticity",
+                               scene.elasticity,
+                               scene.potential_elasticity,
+                               u,
+                               sums.elastic_energy,
+                               sums.elastic_gradient,
+                               sums.elastic_hessian);
+      compare_with_direct<dim>(name + "cMPM inertia",
+                               scene.inertia,
+                               scene.potential_inertia,
+                               u,
+                               sums.kinetic_energy,
+                               sums.kinetic_gradient,
+                               sums.kinetic_hessian);
+    }
 
     // no net internal force: sum over nodes of dE/du_I = 0
     Vector<double> g(u.size());

@@ -100,6 +100,25 @@ namespace bfemp
     shape_functions() const;
 
   private:
+    /** A coarse element: multi-index, flat index, lower corner. */
+    struct Element
+    {
+      std::array<int, dim> index;
+      std::size_t          flat = 0;
+      Point<dim>           corner;
+    };
+
+    /** The element of the particles of one ParticleSystem cell. */
+    template <typename ParticleRange>
+    Element
+    element_of(const ParticleRange &cell_particles) const;
+
+    /** q = p Q of @p element for a field Q on the coarse node lattice. */
+    void
+    gather(const Element                     &element,
+           const std::vector<Tensor<1, dim>> &field,
+           std::vector<Tensor<1, dim>>       &fine) const;
+
     CoarseGrid<dim>              grid;
     CoarsenedShapeFunctions<dim> phi;
     double                       bound                = 1.;

@@ -16,10 +16,13 @@ namespace bfemp
    *   E(u) = \frac12 \sum_p m_p \Big|\sum_I \Phi_{Ip} u_I - \hat u_p\Big|^2,
    *   \quad \hat u_p = \Delta t\, v_p + \Delta t^2 g ,
    * @f]
-   * whose Hessian is the consistent mass sum_p m_p Phi_Ip^T Phi_Jp. A lumped
-   * mass would need positive row sums, which the coarsened shape functions
-   * do not have (they are negative at some coarse nodes outside the body).
-   * With this form the step conserves linear momentum exactly: the
+   * whose Hessian is the consistent mass sum_p m_p Phi_Ip^T Phi_Jp. It is
+   * formed on each element's fine patch, the scalar fine mass
+   * sum_p m_p B_kp B_lp, and condensed with the element's control matrix
+   * p (CmpmElementAssembly), so that a particle costs 3^dim fine functions. A
+   * lumped mass would need positive row sums, which the coarsened shape
+   * functions do not have (they are negative at some coarse nodes outside the
+   * body). With this form the step conserves linear momentum exactly: the
    * gradients of the elasticity sum to zero over the coarse nodes (partition
    * of unity), so sum_p m_p u_p = sum_p m_p u^_p at the minimum.
    */
@@ -59,23 +62,18 @@ namespace bfemp
                 const HessianKind     kind) const override;
 
   private:
-    /** Phi_Ip with unified node numbers, and m_p, u^_p of a particle. */
-    template <typename ParticleAccessor>
-    void
-    evaluate(const ParticleAccessor      &particle,
-             std::vector<unsigned int>   &nodes,
-             std::vector<Tensor<2, dim>> &phi,
-             double                      &mass,
-             Tensor<1, dim>              &target) const;
-
-    /** sum_I Phi_Ip u_I - u^_p, with what evaluate() gives. */
+    /** u^_p = dt v_p + gravity_weight g of a particle. */
     template <typename ParticleAccessor>
     Tensor<1, dim>
-    residual(const ParticleAccessor      &particle,
-             const Vector<double>        &u,
-             std::vector<unsigned int>   &nodes,
-             std::vector<Tensor<2, dim>> &phi,
-             double                      &mass) const;
+    target(const ParticleAccessor &particle) const;
+
+    /** r_p = u_p - u^_p with u_p = sum_k B_k q_k, the fine functions
+     *  @p B at the particle and the element's fine control values q. */
+    template <typename ParticleAccessor>
+    Tensor<1, dim>
+    residual(const ParticleAccessor                      &particle,
+             const typename CoarseGrid<dim>::FineStencil &B,
+             const std::vector<Tensor<1, dim>>           &q) const;
 
     ParticleSystem<dim>           &particles;
     const CmpmDiscretization<dim> &cmpm;

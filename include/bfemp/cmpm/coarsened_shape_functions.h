@@ -94,6 +94,16 @@ namespace bfemp
              const Point<dim>                   &x,
              std::vector<CoarseShapeValue<dim>> &values) const;
 
+    /**
+     * Phi_I (eq. 15, without gradients) of the r coarse nodes of the active
+     * element @p element at the point where the fine functions are
+     * @p stencil (CoarseGrid::fine_stencil).
+     */
+    void
+    values(const std::size_t                            element,
+           const typename CoarseGrid<dim>::FineStencil &stencil,
+           std::vector<Tensor<2, dim>>                 &phi) const;
+
     /** The same in the element that contains x. */
     void
     evaluate(const Point<dim>                   &x,
@@ -121,6 +131,42 @@ namespace bfemp
      */
     double
     interpolation_bound(const std::size_t element) const;
+
+    /**
+     * The control values q_k = sum_I p_kI Q_I at all n^dim fine nodes of an
+     * active element from the displacements Q of its r local coarse nodes,
+     * so that u(x) = sum_k B_k(x) q_k in the element (eq. 15 applied to a
+     * field). With them a particle costs what a fine B-spline particle
+     * costs: 3^dim fine functions instead of r matrix-valued ones.
+     */
+    void
+    fine_values(const std::size_t                  element,
+                const std::vector<Tensor<1, dim>> &coarse,
+                std::vector<Tensor<1, dim>>       &fine) const;
+
+    /**
+     * The transpose: F_I = sum_k p_kI^T f_k, the forces on the r local
+     * coarse nodes that do the same work as the forces @p fine on the fine
+     * nodes (seed 002's f_alpha = p_alpha^T f). @p coarse is overwritten.
+     */
+    void
+    coarse_forces(const std::size_t                  element,
+                  const std::vector<Tensor<1, dim>> &fine,
+                  std::vector<Tensor<1, dim>>       &coarse) const;
+
+    /**
+     * The condensed stiffness K_IJ = sum_kl p_kI^T K_kl p_lJ (seed 002's
+     * K_alpha = p_alpha^T K p_alpha) of the fine blocks K_kl between the
+     * fine nodes @p nodes: the block of nodes[i] and nodes[j] for i <= j is
+     * @p upper[i * m + j] (m = nodes.size()), K symmetric. Blocks of fine
+     * nodes more than two apart in a direction share no knot span and are
+     * skipped. @p coarse receives all r x r blocks, coarse[I * r + J].
+     */
+    void
+    condense(const std::size_t                  element,
+             const std::vector<unsigned int>   &nodes,
+             const std::vector<Tensor<2, dim>> &upper,
+             std::vector<Tensor<2, dim>>       &coarse) const;
 
     /** p_i of an active element, control[i * r + I] (BoundaryInteriorMap). */
     const std::vector<Tensor<2, dim>> &

@@ -100,6 +100,12 @@ namespace bfemp
     void
     for_each_cell_scattering(const Function &f);
 
+    /** f(particles of a cell) for all non-empty cells, each cell on its
+     *  own (no scatters to shared nodes). */
+    template <typename Function>
+    void
+    for_each_cell(const Function &f);
+
     /** f(particle) for all particles, each particle on its own. */
     template <typename Function>
     void
@@ -112,6 +118,15 @@ namespace bfemp
     template <typename Result, typename Function>
     Result
     sum(const Function &f) const;
+
+    /**
+     * Sum over the non-empty cells of f(particles of the cell), formed
+     * stripe by stripe in a fixed order like sum(): for sums whose
+     * particles share work per cell (cMPM's per-element fine field).
+     */
+    template <typename Result, typename Function>
+    Result
+    sum_over_cells(const Function &f) const;
 
   private:
     /** f(particle) for the particles of every step-th stripe from first. */
@@ -127,6 +142,12 @@ namespace bfemp
     for_cells_of_stripes(const unsigned int first,
                          const unsigned int step,
                          const Function    &f);
+
+    /** Sum over the stripes of add_cell(partial, particles of a cell),
+     *  formed stripe by stripe in a fixed order. */
+    template <typename Result, typename AddCell>
+    Result
+    sum_by_stripes(const AddCell &add_cell) const;
 
     void
     rebuild_stripes();
@@ -207,16 +228,26 @@ namespace bfemp
   template <int dim>
   template <typename Function>
   void
+  ParticleSystem<dim>::for_each_cell(const Function &f)
+  {
+    for_cells_of_stripes(0, 1, f);
+  }
+
+  template <int dim>
+  template <typename Function>
+  void
   ParticleSystem<dim>::for_each(const Function &f)
   {
     for_stripes(0, 1, f);
   }
 
   template <int dim>
-  template <typename Result, typename Function>
+  template <typename Result, typename AddCell>
   Result
-  ParticleSystem<dim>::sum(const Function &f) const
+  ParticleSystem<dim>::sum_by_stripes(const AddCell &add_cell) const
   {
+    // one partial sum per stripe, added up in stripe order: the result does
+    // not depend on how the stripes are spread over threads
     std::vector<Result> partial(stripes.size(), Result());
     auto               &handler =
       const_cast<Particles::ParticleHandler<dim> &>(particle_handler);
@@ -226,14 +257,36 @@ namespace bfemp
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int s = begin; s < end; ++s)
           for (const auto &cell : stripes[s])
-            for (const auto &particle : handler.particles_in_cell(cell))
-              partial[s] += f(particle);
+            add_cell(partial[s], handler.particles_in_cell(cell));
       },
       1);
     Result result = Result();
     for (const Result &p : partial)
       result += p;
     return result;
+  }
+
+  template <int dim>
+  template <typename Result, typename Function>
+  Result
+  ParticleSystem<dim>::sum(const Function &f) const
+  {
+    return sum_by_stripes<Result>(
+      [&](Result &partial, const auto &cell_particles) {
+        for (const auto &particle : cell_particles)
+          partial += f(particle);
+      });
+  }
+
+  template <int dim>
+  template <typename Result, typename Function>
+  Result
+  ParticleSystem<dim>::sum_over_cells(const Function &f) const
+  {
+    return sum_by_stripes<Result>(
+      [&](Result &partial, const auto &cell_particles) {
+        partial += f(cell_particles);
+      });
   }
 } // namespace bfemp
 

@@ -34,10 +34,14 @@ namespace bfemp
    * step's start and are recomputed on the fly rather than stored.
    *
    * With cMPM (seed 002) the unknowns are coarse nodes and the map from
-   * them to a particle is matrix-valued, u_p = sum_I Phi_I Q_I; then
-   * F_p(u) = (I + sum_I grad(Phi_I u_I)) F_p^n, still linear in u. The
-   * energy, gradient, Hessian and det F bound are written once over a
-   * per-particle stencil that provides dF_p/du_k, for both maps.
+   * them to a particle is matrix-valued, u_p = sum_I Phi_I Q_I with
+   * Phi_I = sum_k B_k p_kI (eq. 15); then
+   * F_p(u) = (I + sum_I grad(Phi_I u_I)) F_p^n, still linear in u. A cMPM
+   * particle is evaluated on its element's fine patch, with the fine
+   * control values q = p Q as nodal values, and forces and Hessian blocks
+   * are condensed with p once per element (CmpmElementAssembly). The
+   * particle's energy, forces and Hessian blocks are written once, over a
+   * stencil of scalar functions, for both maps.
    */
   template <int dim>
   class MpmElasticityTerm : public EnergyTerm<dim>
@@ -83,43 +87,45 @@ namespace bfemp
     minimum_determinant(const Vector<double> &u) const override;
 
   private:
-    /** Calls f(maker) with the stencil maker of the particle-to-unknowns
-     *  map in use (cMPM, or the B-spline kernel of the grid's degree). */
+    /** Calls f(maker) with the stencil maker of the grid's B-spline kernel
+     *  (of the grid's degree). */
     template <typename Function>
     decltype(auto)
-    with_stencil(const Function &f) const;
+    with_kernel(const Function &f) const;
 
-    template <typename Maker>
-    double
-    value(const Maker &make_stencil, const Vector<double> &u) const;
-
-    template <typename Maker>
+    /**
+     * cMPM: f(element, q, particles) for every element with particles,
+     * q = p Q its fine control values of @p u (CmpmElementAssembly);
+     * race-free for scatters to the unknowns.
+     */
+    template <typename Function>
     void
-    add_gradient(const Maker          &make_stencil,
-                 const Vector<double> &u,
-                 Vector<double>       &gradient) const;
+    for_each_element(const Vector<double> &u, const Function &f) const;
 
-    template <typename Maker>
-    void
-    add_hessian(const Maker          &make_stencil,
-                const Vector<double> &u,
-                SparseMatrix<double> &hessian,
-                const HessianKind     kind) const;
+    /** cMPM: the sum over particles of f(fine stencil, q), formed element
+     *  by element in a fixed order. */
+    template <typename Result, typename Function>
+    Result
+    sum_over_elements(const Vector<double> &u, const Function &f) const;
 
-    template <typename Maker>
+    /** V_p^0 psi(F_p(u)), or +infinity where det F_p(u) <= 0. */
+    template <typename Stencil, typename Field>
     double
-    step_bound(const Maker          &make_stencil,
-               const Vector<double> &u,
-               const Vector<double> &p) const;
+    particle_energy(const Stencil &s, const Field &u) const;
 
-    template <typename Maker>
-    double
-    minimum_determinant(const Maker          &make_stencil,
-                        const Vector<double> &u) const;
-
-    template <typename Maker>
+    /** sink(node k, s V_p^0 P(F_p(u)) : dF_p/du_k) for the stencil's nodes. */
+    template <typename Stencil, typename Field, typename Sink>
     void
-    add_couplings(const Maker &make_stencil, NodeSparsity &sparsity) const;
+    add_particle_forces(const Stencil &s,
+                        const Field   &u,
+                        const Sink    &sink) const;
+
+    /** Adds every particle's blocks s V_p^0 dF:dP/dF:dF to @p cell. */
+    template <typename Cell, typename Field>
+    void
+    add_particle_blocks(Cell             &cell,
+                        const Field      &u,
+                        const HessianKind kind) const;
 
     const BackgroundGrid<dim>                         &grid;
     ParticleSystem<dim>                               &particles;
