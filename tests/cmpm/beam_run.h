@@ -4,6 +4,7 @@
 // Runs of prm/cmpm/beam_2d.prm (the heterogeneous 2D beam under gravity)
 // for the cMPM scene tests, and the entries that turn it into BSMPM-fine.
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -40,22 +41,24 @@ namespace bfemp_tests
 
   /**
    * The entries that run the beam as BSMPM-fine: a quadratic B-spline grid
-   * of cell s = 0.02 shifted by s/2 (so that its functions are cMPM's fine
-   * patch functions) with its lower edge at y = @p lower_y, clamped over
-   * the same 0.1 m at each end, 2 particles per cell and direction.
+   * of cell @p s (cMPM's fine knot span, 0.02 for H = 0.1 and n = 7)
+   * shifted by s/2 (so that its functions are cMPM's fine patch functions)
+   * with its lower edge at y = @p lower_y, clamped over the same 0.1 m at
+   * each end, 2 particles per cell and direction.
    */
   inline std::string
-  beam_bsmpm_fine(const double lower_y)
+  beam_bsmpm_fine(const double lower_y, const double s = 0.02)
   {
     std::ostringstream entries;
     entries << "subsection cmpm\n  set enabled = false\nend\n"
             << "subsection grid\n"
-            << "  set lower corner = -0.11, " << lower_y << "\n"
-            << "  set upper corner = 2.51, 0.81\n"
-            << "  set cell size    = 0.02\n"
+            << "  set lower corner = " << -0.1 - s / 2 << ", " << lower_y
+            << "\n  set upper corner = " << 2.5 + s / 2 << ", " << 0.8 + s / 2
+            << "\n  set cell size    = " << s << "\n"
             << "  set kernel       = quadratic\n"
             << "end\n"
-            << "subsection boundaries\n  set wall layers = 10\nend\n"
+            << "subsection boundaries\n  set wall layers = "
+            << std::lround(0.2 / s) << "\nend\n"
             << "subsection body 0\n  set particles per cell = 2\nend\n"
             << "subsection body 1\n  set particles per cell = 2\nend\n";
     return entries.str();
