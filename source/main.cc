@@ -53,7 +53,7 @@ namespace
       // one of each numbered subsection, so that the reference shows them
       SceneParameters<dim>::declare_parameters(
         prm,
-        {typename BodyParameters<dim>::Counts{1, 1}},
+        {typename BodyParameters<dim>::Counts{1, 1, 1}},
         1,
         {2});
       std::ofstream prm_file(folder + "/" + name + ".prm");

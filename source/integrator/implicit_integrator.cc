@@ -18,7 +18,8 @@ namespace bfemp
     const SolverParameters                            &solver,
     const ContactParameters                           &contact,
     std::unique_ptr<SubsteppedMPM<dim>>                substepped,
-    CmpmDiscretization<dim>                           *cmpm)
+    CmpmDiscretization<dim>                           *cmpm,
+    ParticleLoads<dim>                                *loads)
     : grid(grid)
     , particles(particles)
     , transfer(transfer)
@@ -76,6 +77,23 @@ namespace bfemp
       register_term(mpm_correction_elasticity, set_mpm_scale, false);
     else if (with_mpm)
       register_term(mpm_elasticity, set_mpm_scale, true);
+    if (with_mpm && loads != nullptr && !loads->empty())
+      {
+        AssertThrow(!substepped_mpm,
+                    ExcMessage("surface loads on substepped MPM bodies are "
+                               "not implemented (Simulation refuses them)"));
+        particle_loads = std::make_unique<ParticleLoadTerm<dim>>(grid,
+                                                                 particles,
+                                                                 *loads,
+                                                                 dofs,
+                                                                 cmpm);
+        register_term(
+          *particle_loads,
+          [this](const double s, const double) {
+            particle_loads->set_scale(s);
+          },
+          true);
+      }
     if (with_contact)
       {
         contact_geometry = std::make_unique<ContactGeometry<dim>>(grid,
@@ -549,8 +567,13 @@ namespace bfemp
         constrain(dt, time + dt);
         if (with_contact)
           contact_geometry->begin_step(time + dt);
+        // the loads of Newmark's a^n are those at t^n, the step's at t^n+1
+        if (particle_loads)
+          particle_loads->set_time(time);
         acceleration = start_acceleration();
-        predicted    = predictor(acceleration, dt);
+        if (particle_loads)
+          particle_loads->set_time(time + dt);
+        predicted = predictor(acceleration, dt);
         if (cmpm_inertia)
           {
             // cMPM's inertia is the consistent one over the particles.

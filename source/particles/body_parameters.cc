@@ -69,6 +69,13 @@ namespace bfemp
                       "subsection; they apply in order, the last containing "
                       "a particle wins, and 'operation = subtract' gives the "
                       "body's own material back inside it.");
+    prm.declare_entry("number of surface loads",
+                      "0",
+                      Patterns::Integer(0),
+                      "[-] Number of 'surface load k' subsections (k = 0, 1, "
+                      "...): dead tractions on faces of the body's bounding "
+                      "box, carried by the particles next to the face "
+                      "(implicit integrators).");
     MaterialParameters::declare_parameters(prm);
     for (unsigned int j = 0; j < counts.primitives; ++j)
       {
@@ -83,6 +90,12 @@ namespace bfemp
         MaterialParameters::declare_parameters(prm);
         prm.leave_subsection();
       }
+    for (unsigned int k = 0; k < counts.loads; ++k)
+      {
+        prm.enter_subsection(numbered("surface load", k));
+        SurfaceLoad<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
   }
 
 
@@ -94,6 +107,7 @@ namespace bfemp
     Counts counts;
     counts.primitives = prm.get_integer("number of primitives");
     counts.regions    = prm.get_integer("number of material regions");
+    counts.loads      = prm.get_integer("number of surface loads");
     return counts;
   }
 
@@ -171,6 +185,15 @@ namespace bfemp
                                           where + "/" + name,
                                           directory(name));
         regions[k].material.parse_parameters(prm, where + "/" + name);
+        prm.leave_subsection();
+      }
+
+    surface_loads.resize(prm.get_integer("number of surface loads"));
+    for (unsigned int k = 0; k < surface_loads.size(); ++k)
+      {
+        const std::string name = numbered("surface load", k);
+        prm.enter_subsection(name);
+        surface_loads[k].parse_parameters(prm, where + "/" + name);
         prm.leave_subsection();
       }
   }

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/multithread_info.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <regex>
@@ -52,6 +53,24 @@ namespace bfemp
     // The one place that maps 'time/integrator' (and the scene: FEM bodies,
     // cMPM) to a TimeIntegrator; the time loop only sees the interface.
     const TimeParameters &time = parameters.time;
+    // the bodies' surface loads (SceneParameters refused them with other
+    // integrators)
+    if (std::any_of(parameters.bodies.begin(),
+                    parameters.bodies.end(),
+                    [](const auto &body) {
+                      return !body.surface_loads.empty();
+                    }))
+      try
+        {
+          particle_loads =
+            std::make_unique<ParticleLoads<dim>>(parameters.bodies,
+                                                 parameters.grid.cell_size,
+                                                 particle_system);
+        }
+      catch (const InputError &error)
+        {
+          throw InputError(parameter_file + ": " + error.what());
+        }
     if (parameters.cmpm.enabled)
       cmpm = std::make_unique<CmpmDiscretization<dim>>(grid, parameters.cmpm);
     std::unique_ptr<SubsteppedMPM<dim>> substepped;
@@ -99,7 +118,8 @@ namespace bfemp
                                                     parameters.solver,
                                                     parameters.contact,
                                                     std::move(substepped),
-                                                    cmpm.get());
+                                                    cmpm.get(),
+                                                    particle_loads.get());
         check_bodies_apart(*implicit);
         time_integrator = std::move(implicit);
       }

@@ -22,6 +22,7 @@
 #include <bfemp/solver/inertia_term.h>
 #include <bfemp/solver/mpm_elasticity_term.h>
 #include <bfemp/solver/newton_solver.h>
+#include <bfemp/solver/particle_load_term.h>
 #include <bfemp/solver/relative_energy_term.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
 
@@ -86,7 +87,8 @@ namespace bfemp
       const SolverParameters                            &solver,
       const ContactParameters                           &contact,
       std::unique_ptr<SubsteppedMPM<dim>> substepped_mpm = nullptr,
-      CmpmDiscretization<dim>            *cmpm           = nullptr);
+      CmpmDiscretization<dim>            *cmpm           = nullptr,
+      ParticleLoads<dim>                 *loads          = nullptr);
 
     /**
      * Advances from step.time to step.time + step.dt; throws
@@ -235,6 +237,8 @@ namespace bfemp
     InertiaTerm<dim>        inertia;
     /** The hold on weakly seen coarse-node combinations (cMPM, r > 0). */
     std::unique_ptr<CmpmRegularizationTerm<dim>> cmpm_regularization;
+    /** The bodies' surface loads (only if a body has one). */
+    std::unique_ptr<ParticleLoadTerm<dim>> particle_loads;
     /** The consistent inertia of cMPM bodies (replaces inertia). */
     std::unique_ptr<CmpmInertiaTerm<dim>> cmpm_inertia;
     FemElasticityTerm<dim>                fem_elasticity;

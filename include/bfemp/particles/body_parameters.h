@@ -5,6 +5,7 @@
 #include <bfemp/base/prm_entry_origins.h>
 #include <bfemp/material/material_parameters.h>
 #include <bfemp/particles/shape_primitive.h>
+#include <bfemp/particles/surface_load.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -32,11 +33,13 @@ namespace bfemp
     {
       unsigned int primitives = 1;
       unsigned int regions    = 0;
+      unsigned int loads      = 0;
 
       bool
       operator==(const Counts &other) const
       {
-        return primitives == other.primitives && regions == other.regions;
+        return primitives == other.primitives && regions == other.regions &&
+               loads == other.loads;
       }
     };
 
@@ -49,9 +52,11 @@ namespace bfemp
 
     std::vector<ShapePrimitive<dim>> primitives;
     std::vector<MaterialRegion>      regions;
-    unsigned int                     particles_per_direction = 2;
-    bool                             jittered                = false;
-    unsigned int                     jitter_seed             = 1;
+    /** Dead tractions on faces of the body ("surface load k"). */
+    std::vector<SurfaceLoad<dim>> surface_loads;
+    unsigned int                  particles_per_direction = 2;
+    bool                          jittered                = false;
+    unsigned int                  jitter_seed             = 1;
     /** Entry "initial velocity": numbers, or muParser expressions of the
      *  rest position (x, y, z) and pi. */
     PositionField<dim> initial_velocity;

@@ -16,6 +16,7 @@
 #include <bfemp/io/progress_reporter.h>
 #include <bfemp/io/step_diagnostics.h>
 #include <bfemp/material/material.h>
+#include <bfemp/particles/particle_loads.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/scene/scene_parameters.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
@@ -202,7 +203,9 @@ namespace bfemp
     /** The substepped integrator's own macro-step transfer, if it has one. */
     std::unique_ptr<ParticleGridTransfer<dim>> macro_transfer;
     /** cMPM's coarse nodes and shape functions (cmpm/enabled). */
-    std::unique_ptr<CmpmDiscretization<dim>>   cmpm;
+    std::unique_ptr<CmpmDiscretization<dim>> cmpm;
+    /** The bodies' surface loads, if any body has one. */
+    std::unique_ptr<ParticleLoads<dim>>        particle_loads;
     std::vector<std::unique_ptr<FemBody<dim>>> fem_body_list;
     /** The integrator 'time/integrator' chooses (create_integrator()). */
     std::unique_ptr<TimeIntegrator<dim>> time_integrator;
