@@ -10,13 +10,15 @@ namespace bfemp
                                 const ParticleGridTransfer<dim> &transfer,
                                 const GridBoundaries<dim>       &boundaries,
                                 const Tensor<1, dim>            &gravity,
-                                const TimeParameters::Integrator variant)
+                                const TimeParameters::Integrator variant,
+                                ParticleLoads<dim>              *loads)
     : grid(grid)
     , particles(particles)
     , transfer(transfer)
     , boundaries(boundaries)
     , gravity(gravity)
     , variant(variant)
+    , loads(loads)
   {}
 
 
@@ -66,6 +68,19 @@ namespace bfemp
 
   template <int dim>
   void
+  ExplicitMPM<dim>::add_loads(const double time)
+  {
+    // the force of the state at t^n, as the stresses'
+    if (loads == nullptr)
+      return;
+    loads->set_time(time);
+    loads->add_to_grid(grid, particles, state.force);
+  }
+
+
+
+  template <int dim>
+  void
   ExplicitMPM<dim>::set_displacement(
     const std::vector<Tensor<1, dim>> &velocity,
     const double                       dt)
@@ -87,6 +102,7 @@ namespace bfemp
     if (variant == TimeParameters::Integrator::explicit_usl)
       {
         transfer.particles_to_grid(particles, state, true);
+        add_loads(time);
         momentum_to_velocity();
         update_grid_velocity(dt, time);
         transfer.grid_to_particles(particles, state, true, dt);
@@ -99,6 +115,7 @@ namespace bfemp
         set_displacement(state.velocity, dt);
         transfer.update_deformation_gradient(particles, state.displacement);
         transfer.stress_to_grid(particles, state);
+        add_loads(time);
         update_grid_velocity(dt, time);
         transfer.grid_to_particles(particles, state, false, dt);
       }

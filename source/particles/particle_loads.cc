@@ -1,5 +1,6 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/parameter_tools.h>
+#include <bfemp/grid/kernel_stencil.h>
 #include <bfemp/particles/particle_loads.h>
 
 #include <limits>
@@ -124,6 +125,29 @@ namespace bfemp
       if (load.body == b && load.carries(x))
         f += load.force;
     return f;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleLoads<dim>::add_to_grid(const BackgroundGrid<dim>   &grid,
+                                  ParticleSystem<dim>         &particles,
+                                  std::vector<Tensor<1, dim>> &grid_force) const
+  {
+    if (loads.empty())
+      return;
+    dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
+      particles.for_each_scattering([&](const auto &particle) {
+        const Tensor<1, dim> f = force(particle.get_properties());
+        if (f.norm_square() == 0.)
+          return;
+        KernelStencil<dim, decltype(degree)::value> kernel;
+        kernel.reinit(grid.lattice(), particle.get_location());
+        for (unsigned int k = 0; k < kernel.n_nodes; ++k)
+          grid_force[kernel.node[k]] += kernel.weight[k] * f;
+      });
+    });
   }
 
 

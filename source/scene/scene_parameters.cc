@@ -330,16 +330,13 @@ namespace bfemp
     if (cmpm.enabled)
       check_cmpm();
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      // the loads enter the implicit potential as an energy term
-      require_input(bodies[b].surface_loads.empty() ||
-                      (time.is_implicit() && !time.is_substepped()),
+      require_input(bodies[b].surface_loads.empty() || !time.is_substepped(),
                     "body " + std::to_string(b),
                     "number of surface loads",
                     std::to_string(bodies[b].surface_loads.size()),
-                    "surface loads need an implicit integrator "
-                    "('time/integrator' = implicit backward Euler or implicit "
-                    "Newmark); the explicit and substepped ones do not apply "
-                    "them yet");
+                    "surface loads are applied by the explicit and implicit "
+                    "integrators; the substepped one does not apply them "
+                    "yet");
     require_input(fem_bodies.empty() || time.is_implicit() ||
                     time.is_substepped(),
                   "time",

@@ -130,7 +130,8 @@ namespace bfemp
                                            transfer,
                                            parameters.boundaries,
                                            parameters.gravity,
-                                           time.integrator);
+                                           time.integrator,
+                                           particle_loads.get());
   }
 
 

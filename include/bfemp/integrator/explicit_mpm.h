@@ -5,6 +5,7 @@
 #include <bfemp/grid/grid_state.h>
 #include <bfemp/integrator/time_integrator.h>
 #include <bfemp/integrator/time_parameters.h>
+#include <bfemp/particles/particle_loads.h>
 #include <bfemp/particles/particle_system.h>
 #include <bfemp/transfer/particle_grid_transfer.h>
 
@@ -30,7 +31,8 @@ namespace bfemp
                 const ParticleGridTransfer<dim> &transfer,
                 const GridBoundaries<dim>       &boundaries,
                 const Tensor<1, dim>            &gravity,
-                const TimeParameters::Integrator variant);
+                const TimeParameters::Integrator variant,
+                ParticleLoads<dim>              *loads = nullptr);
 
     /** Advances from step.time to step.time + step.dt. */
     void
@@ -49,6 +51,10 @@ namespace bfemp
     void
     update_grid_velocity(const double dt, const double time);
 
+    /** f_i += sum_p w_ip f_p(t) of the bodies' surface loads. */
+    void
+    add_loads(const double time);
+
     /** u_i = dt * velocity_i, the explicit grid displacement. */
     void
     set_displacement(const std::vector<Tensor<1, dim>> &velocity,
@@ -64,7 +70,9 @@ namespace bfemp
     const GridBoundaries<dim>       &boundaries;
     const Tensor<1, dim>             gravity;
     const TimeParameters::Integrator variant;
-    GridState<dim>                   state;
+    /** The bodies' surface loads, or nullptr. */
+    ParticleLoads<dim> *loads;
+    GridState<dim>      state;
   };
 } // namespace bfemp
 

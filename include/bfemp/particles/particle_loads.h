@@ -54,6 +54,16 @@ namespace bfemp
     Tensor<1, dim>
     force(const ArrayView<const double> &properties) const;
 
+    /**
+     * The P2G of the loads at the time of the last set_time(),
+     * grid_force_i += sum_p w_ip f_p with the grid's B-spline kernel (the
+     * explicit integrators' external grid force), race-free.
+     */
+    void
+    add_to_grid(const BackgroundGrid<dim>   &grid,
+                ParticleSystem<dim>         &particles,
+                std::vector<Tensor<1, dim>> &grid_force) const;
+
     /** The particles that carry load @p k (in the order of the bodies'
      *  loads) and its face area [m^(dim-1)]. */
     unsigned int
