@@ -77,11 +77,9 @@ namespace bfemp
       register_term(mpm_correction_elasticity, set_mpm_scale, false);
     else if (with_mpm)
       register_term(mpm_elasticity, set_mpm_scale, true);
-    if (with_mpm && loads != nullptr && !loads->empty())
+    // substepped MPM bodies: the substeps apply the loads (as gravity)
+    if (with_mpm && !substepped_mpm && loads != nullptr && !loads->empty())
       {
-        AssertThrow(!substepped_mpm,
-                    ExcMessage("surface loads on substepped MPM bodies are "
-                               "not implemented (Simulation refuses them)"));
         particle_loads = std::make_unique<ParticleLoadTerm<dim>>(grid,
                                                                  particles,
                                                                  *loads,

@@ -10,7 +10,8 @@ namespace bfemp
     const ParticleGridTransfer<dim>   &macro_transfer,
     const GridBoundaries<dim>         &boundaries,
     const Tensor<1, dim>              &gravity,
-    const TimeParameters::Substepping &parameters)
+    const TimeParameters::Substepping &parameters,
+    ParticleLoads<dim>                *loads)
     : grid(grid)
     , particles(particles)
     , substep_transfer(substep_transfer)
@@ -21,7 +22,8 @@ namespace bfemp
                          substep_transfer,
                          boundaries,
                          gravity,
-                         parameters.update)
+                         parameters.update,
+                         loads)
     , reconstruction(grid, parameters)
     , secant_end_velocity(parameters.secant_end_velocity)
     , affine_substeps(substep_transfer.parameters().scheme ==

@@ -75,7 +75,7 @@ namespace bfemp
                       "[-] Number of 'surface load k' subsections (k = 0, 1, "
                       "...): dead tractions on faces of the body's bounding "
                       "box, carried by the particles next to the face "
-                      "(explicit and implicit integrators).");
+                      "(every integrator, B-spline grid and cMPM).");
     MaterialParameters::declare_parameters(prm);
     for (unsigned int j = 0; j < counts.primitives; ++j)
       {

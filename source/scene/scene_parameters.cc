@@ -329,14 +329,6 @@ namespace bfemp
     contact.check_bodies(bodies.size(), fem_bodies.size());
     if (cmpm.enabled)
       check_cmpm();
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      require_input(bodies[b].surface_loads.empty() || !time.is_substepped(),
-                    "body " + std::to_string(b),
-                    "number of surface loads",
-                    std::to_string(bodies[b].surface_loads.size()),
-                    "surface loads are applied by the explicit and implicit "
-                    "integrators; the substepped one does not apply them "
-                    "yet");
     require_input(fem_bodies.empty() || time.is_implicit() ||
                     time.is_substepped(),
                   "time",

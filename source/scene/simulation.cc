@@ -93,7 +93,8 @@ namespace bfemp
                                                               : transfer,
                                                parameters.boundaries,
                                                parameters.gravity,
-                                               time.substepping);
+                                               time.substepping,
+                                               particle_loads.get());
         // Without FEM bodies the macro step is the substeps alone; with them
         // the substeps' prediction enters the implicit contact solve below.
         if (fem_body_list.empty())

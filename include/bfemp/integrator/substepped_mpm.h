@@ -52,7 +52,8 @@ namespace bfemp
                   const ParticleGridTransfer<dim>   &macro_transfer,
                   const GridBoundaries<dim>         &boundaries,
                   const Tensor<1, dim>              &gravity,
-                  const TimeParameters::Substepping &parameters);
+                  const TimeParameters::Substepping &parameters,
+                  ParticleLoads<dim>                *loads = nullptr);
 
     /** A macro step of S = step.substeps substeps from step.time to
      *  step.time + step.dt (MPM only). */
