@@ -346,7 +346,7 @@ namespace bfemp
   void
   SceneParameters<dim>::check_cmpm() const
   {
-    // What cMPM supports so far (doc/cmpm.md, "What is left"): the
+    // What cMPM supports so far (doc/cmpm.md, "Status and limits"): the
     // implicit backward Euler with PIC; FEM bodies take part through the
     // barrier contact.
     require_input(time.is_implicit() &&
