@@ -34,24 +34,14 @@ namespace bfemp
     // Each cell of the particle system is one coarse element; elements are
     // independent, so the cell loop's threads rebuild them side by side.
     particles.for_each_cell_scattering([&](const auto &cell_particles) {
+      // cells of the particle loops are never empty
+      const Element element = element_of(cell_particles);
       std::vector<LocalQuadraturePoint<dim>> points;
-      std::size_t                            element = 0;
-      std::array<int, dim>                   index;
-      Point<dim>                             corner;
-      bool                                   first = true;
       for (const auto &particle : cell_particles)
         {
-          const Point<dim> x = particle.get_location();
-          if (first)
-            {
-              index   = grid.element_of(x);
-              element = grid.element_index(index);
-              corner  = grid.element_origin(index);
-              first   = false;
-            }
           const auto                p = particle.get_properties();
           LocalQuadraturePoint<dim> point;
-          point.position = Point<dim>(x - corner);
+          point.position = Point<dim>(particle.get_location() - element.corner);
           point.weight   = p[Layout::rest_volume];
           point.deformation_gradient =
             Layout::get_tensor(p, Layout::deformation_gradient);
@@ -61,18 +51,16 @@ namespace bfemp
             point.material->tangent(point.deformation_gradient, true);
           points.push_back(point);
         }
-      if (first)
-        return;
       if (coarse_displacement == nullptr)
         {
-          phi.rebuild(element, points);
+          phi.rebuild(element.flat, points);
           return;
         }
       std::vector<Tensor<1, dim>> local(grid.n_local_nodes());
       for (unsigned int I = 0; I < local.size(); ++I)
-        local[I] = (*coarse_displacement)[grid.global_node(index, I)];
+        local[I] = (*coarse_displacement)[grid.global_node(element.index, I)];
       const unsigned int iterations =
-        phi.rebuild_at_equilibrium(element, points, local).iterations;
+        phi.rebuild_at_equilibrium(element.flat, points, local).iterations;
       std::lock_guard<std::mutex> lock(iterations_mutex);
       max_local_iterations = std::max(max_local_iterations, iterations);
     });
