@@ -1,5 +1,6 @@
 #include <bfemp/io/atomic_file.h>
 #include <bfemp/io/coarse_grid_output.h>
+#include <bfemp/io/vtu_flags.h>
 
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/utilities.h>
@@ -107,16 +108,15 @@ namespace bfemp
                  unsigned int,
                  std::string,
                  DataComponentInterpretation::DataComponentInterpretation>>
-                          vectors = {{0,
-                                      dim - 1,
-                                      "displacement",
-                                      DataComponentInterpretation::component_is_part_of_vector},
-                                     {dim,
-                                      2 * dim - 1,
-                                      "velocity",
-                                      DataComponentInterpretation::component_is_part_of_vector}};
-    DataOutBase::VtkFlags flags;
-    flags.time = time;
+                                vectors = {{0,
+                                            dim - 1,
+                                            "displacement",
+                                            DataComponentInterpretation::component_is_part_of_vector},
+                                           {dim,
+                                            2 * dim - 1,
+                                            "velocity",
+                                            DataComponentInterpretation::component_is_part_of_vector}};
+    const DataOutBase::VtkFlags flags   = vtu_flags(time);
 
     const std::string name =
       "coarse_grid_" + Utilities::int_to_string(snapshot, 5) + ".vtu";

@@ -1,5 +1,6 @@
 #include <bfemp/io/atomic_file.h>
 #include <bfemp/io/fem_output.h>
+#include <bfemp/io/vtu_flags.h>
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
@@ -115,8 +116,7 @@ namespace bfemp
 
     const std::string name = "fem_body_" + std::to_string(b) + "_" +
                              Utilities::int_to_string(snapshot, 5) + ".vtu";
-    DataOutBase::VtkFlags flags;
-    flags.time = time;
+    const DataOutBase::VtkFlags flags = vtu_flags(time);
     write_file_atomically(folder + "/" + name, [&](std::ostream &out) {
       DataOutBase::write_vtu(patches, names, ranges, flags, out);
     });

@@ -1,5 +1,6 @@
 #include <bfemp/io/atomic_file.h>
 #include <bfemp/io/grid_output.h>
+#include <bfemp/io/vtu_flags.h>
 
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
@@ -81,8 +82,7 @@ namespace bfemp
 
     const std::string name =
       "grid_" + Utilities::int_to_string(snapshot, 5) + ".vtu";
-    DataOutBase::VtkFlags flags;
-    flags.time = time;
+    const DataOutBase::VtkFlags flags = vtu_flags(time);
     data_out.set_flags(flags);
     write_file_atomically(folder + "/" + name,
                           [&](std::ostream &out) { data_out.write_vtu(out); });

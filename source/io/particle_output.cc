@@ -1,5 +1,6 @@
 #include <bfemp/io/atomic_file.h>
 #include <bfemp/io/particle_output.h>
+#include <bfemp/io/vtu_flags.h>
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
@@ -35,7 +36,7 @@ namespace bfemp
     add_names("displacement", dim);
     add_names("cauchy_stress", dim * dim);
     for (const char *name :
-         {"von_mises", "J", "mass", "material_id", "body_id"})
+         {"von_mises", "J", "mass", "volume", "material_id", "body_id"})
       names.push_back(name);
 
     using Range =
@@ -98,6 +99,7 @@ namespace bfemp
         patch.data(field++, 0) = von_mises_stress(sigma);
         patch.data(field++, 0) = determinant(F);
         patch.data(field++, 0) = p[Layout::mass];
+        patch.data(field++, 0) = p[Layout::rest_volume];
         patch.data(field++, 0) = p[Layout::material_id];
         patch.data(field++, 0) = p[Layout::body_id];
         patches.push_back(std::move(patch));
@@ -105,8 +107,7 @@ namespace bfemp
 
     const std::string name =
       "particles_" + Utilities::int_to_string(snapshot, 5) + ".vtu";
-    DataOutBase::VtkFlags flags;
-    flags.time = time;
+    const DataOutBase::VtkFlags flags = vtu_flags(time);
     write_file_atomically(folder + "/" + name, [&](std::ostream &out) {
       DataOutBase::write_vtu(patches, names, ranges, flags, out);
     });

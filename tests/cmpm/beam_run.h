@@ -43,11 +43,20 @@ namespace bfemp_tests
    * The entries that run the beam as BSMPM-fine: a quadratic B-spline grid
    * of cell @p s (cMPM's fine knot span, 0.02 for H = 0.1 and n = 7)
    * shifted by s/2 (so that its functions are cMPM's fine patch functions)
-   * with its lower edge at y = @p lower_y, clamped over the same 0.1 m at
-   * each end, 2 particles per cell and direction.
+   * with its lower edge at y = @p lower_y, 2 particles per cell and
+   * direction, clamped at each end
+   * - over the same 0.1 m as cMPM (@p matched_clamp false): the fixed fine
+   *   nodes end s/2 outside the clamped element face, so the fine space
+   *   contains cMPM's;
+   * - or as cMPM is (@p matched_clamp true): one more layer, so that the
+   *   fixed nodes end s/2 inside that face, where cMPM's boundary B-spline
+   *   element takes its fine rows on either side of the face from the fixed
+   *   face nodes (doc/experiments/make_cmpm_prms.py, "Matching clamps").
    */
   inline std::string
-  beam_bsmpm_fine(const double lower_y, const double s = 0.02)
+  beam_bsmpm_fine(const double lower_y,
+                  const double s             = 0.02,
+                  const bool   matched_clamp = false)
   {
     std::ostringstream entries;
     entries << "subsection cmpm\n  set enabled = false\nend\n"
@@ -58,7 +67,7 @@ namespace bfemp_tests
             << "  set kernel       = quadratic\n"
             << "end\n"
             << "subsection boundaries\n  set wall layers = "
-            << std::lround(0.2 / s) << "\nend\n"
+            << std::lround(0.2 / s) + (matched_clamp ? 1 : 0) << "\nend\n"
             << "subsection body 0\n  set particles per cell = 2\nend\n"
             << "subsection body 1\n  set particles per cell = 2\nend\n";
     return entries.str();

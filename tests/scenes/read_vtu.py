@@ -22,7 +22,7 @@ import numpy
 # name -> number of components in the VTK file (2D vectors and tensors are
 # padded to 3 and 9 components by deal.II's VTU writer)
 PARTICLE_ARRAYS = {"velocity": 3, "displacement": 3, "cauchy_stress": 9,
-                   "von_mises": 1, "J": 1, "mass": 1, "material_id": 1,
+                   "von_mises": 1, "J": 1, "mass": 1, "volume": 1, "material_id": 1,
                    "body_id": 1}
 GRID_ARRAYS = {"mass": 1, "velocity": 3}
 

@@ -17,7 +17,7 @@ namespace bfemp
    * the same particle in every snapshot) and particles.pvd listing them with
    * their times.
    * Point data: velocity, displacement (x - X), cauchy_stress (tensor),
-   * von_mises, J, mass, material_id, body_id.
+   * von_mises, J, mass, volume (the rest volume V_p^0), material_id, body_id.
    */
   template <int dim>
   class ParticleOutput

@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Draws seed 002 Figs. 21 and (as curves over time) the r_u it reports for
+the bending beam from bfemp's output: the deformed beam of BSMPM-fine,
+BSMPM-coarse and cMPM at two times, coloured by material, and r_u(t),
+r_sigma(t) of cMPM and BSMPM-coarse against BSMPM-fine.
+
+  for v in "" _fine _coarse; do build/bfemp prm/cmpm/bending_beam_2d$v.prm; done
+  for v in "" _coarse; do /usr/bin/python3 doc/experiments/particle_error.py \\
+      output/cmpm_bending_beam_2d_fine output/cmpm_bending_beam_2d$v \\
+      --csv doc/experiments/data/cmpm_bending_beam_2d$v_errors.csv; done
+  /usr/bin/python3 doc/experiments/plot_cmpm_bending_beam.py output 2d \\
+      doc/images/cmpm_bending_beam_2d.png
+
+The first argument is the folder that holds the three run folders; the
+error CSVs are read from doc/experiments/data/. Without the run folders
+(e.g. for 3D, whose runs are not kept) only the error curves are drawn:
+pass "-" as the folder."""
+
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import run_data  # noqa: E402
+
+RUNS = [("_fine", "BSMPM-fine (reference)"), ("_coarse", "BSMPM-coarse"),
+        ("", "cMPM")]
+
+
+def errors(dim, suffix):
+    path = os.path.join(HERE, "data",
+                        f"cmpm_bending_beam_{dim}{suffix}_errors.csv")
+    with open(path) as handle:
+        rows = list(csv.DictReader(handle))
+    return ([float(r["time"]) for r in rows], [float(r["r_u"]) for r in rows],
+            [float(r["r_sigma"]) for r in rows])
+
+
+def particles(folder, time):
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    series = run_data.pvd(os.path.join(folder, "particles.pvd"))
+    vtu = [f for t, f in series if abs(t - time) < 1e-9][0]
+    grid = run_data.read_grid(vtu)
+    x = vtk_to_numpy(grid.GetPoints().GetData())
+    material = vtk_to_numpy(grid.GetPointData().GetArray("material_id"))
+    return x, material
+
+
+def main():
+    folder, dim, target = sys.argv[1], sys.argv[2], sys.argv[3]
+    times = (0.3, 0.6)
+    draw_beams = folder != "-"
+    rows = len(RUNS) if draw_beams else 0
+    figure = plt.figure(figsize=(11, 2.0 * rows + 3.2))
+    grid = figure.add_gridspec(rows + 1, 2, height_ratios=[1] * rows + [1.6])
+    if draw_beams:
+        for row, (suffix, label) in enumerate(RUNS):
+            run = os.path.join(folder, f"cmpm_bending_beam_{dim}{suffix}")
+            for column, time in enumerate(times):
+                axis = figure.add_subplot(grid[row, column])
+                x, material = particles(run, time)
+                soft = material > 0
+                axis.scatter(x[~soft, 0], x[~soft, 1], s=0.2, c="0.6",
+                             linewidths=0)
+                axis.scatter(x[soft, 0], x[soft, 1], s=0.2, c="tab:red",
+                             linewidths=0)
+                axis.set_xlim(-0.5, 20.5)
+                axis.set_ylim(-3.5, 2.5)
+                axis.set_aspect("equal")
+                axis.set_title(f"{label}, t = {time:g} s", fontsize=9)
+                axis.tick_params(labelsize=7)
+    for column, (index, name) in enumerate(((1, "r_u"), (2, "r_sigma"))):
+        axis = figure.add_subplot(grid[rows, column])
+        for suffix, label, colour in (("", "cMPM", "black"),
+                                      ("_coarse", "BSMPM-coarse",
+                                       "tab:blue")):
+            data = errors(dim, suffix)
+            axis.plot(data[0], data[index], "o-", color=colour, markersize=3,
+                      label=label)
+        axis.set_xlabel("t [s]")
+        axis.set_ylabel(f"{name} against BSMPM-fine (eq. 38)")
+        axis.set_ylim(bottom=0)
+        axis.grid(alpha=0.3)
+        axis.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(target, dpi=120)
+
+
+if __name__ == "__main__":
+    main()
