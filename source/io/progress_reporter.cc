@@ -1,5 +1,6 @@
 #include <bfemp/io/progress_reporter.h>
 
+#include <algorithm>
 #include <iomanip>
 
 namespace bfemp
@@ -46,8 +47,9 @@ namespace bfemp
   double
   ProgressReporter::remaining(const double time) const
   {
+    // the last step may end a round-off beyond end_time: no "-0.0 s" left
     return time > start_time
-             ? elapsed() * (end_time - time) / (time - start_time)
+             ? std::max(0., elapsed() * (end_time - time) / (time - start_time))
              : 0.;
   }
 
