@@ -17,6 +17,9 @@ each with _bsmpm (quadratic B-spline MPM on the fine knot spans) and _linear
 Heterogeneous cube (Section 8.1.4, Figs. 25-26): heterogeneous_cube_3d.prm
 and heterogeneous_cube_2d.prm (run by ctest), each with _full_newton (the
 full Newton local solve) and _fine (BSMPM-fine, the reference).
+Lattice bar (Section 8.1.3, Figs. 23-24, Table 3): lattice_bar_{2d,3d}.prm
+(boundary B-spline elements) with _bspline (B-spline elements) and _fine
+(BSMPM-fine, the reference).
 Beyond the seed (its Section 9 leaves frictional contact open):
 contact_collision_{2d,3d}.prm, a heterogeneous cMPM block thrown at a free
 FEM block with BFEMP's barrier frictional contact, in zero gravity.
@@ -504,6 +507,117 @@ end
                            (lower, upper, HCUBE_SPAN, "quadratic"), cells + 1)
 
 
+# Seed 002 Section 8.1.3 and Table 2: a bar 8 x 2 x 2 m "containing many
+# void regions and fine-scale geometry details", left face fixed, gravity
+# 5 m/s^2, E 1e5, nu 0.4, rho 10, dt 0.025 s, compared at 1.0 and 1.6 s;
+# 2.0K coarse elements (H = 0.25 m: 32 x 8 x 8 = 2048), 992.7K particles
+# (0.485 of the bar's 2.05M sites at 2 per knot span of 0.05 m). The seed
+# shows no lattice geometry: bfemp takes a square lattice of struts, each
+# 1 m x 1 m cell of the side face holding four square holes of 0.35 m (struts
+# 0.15 m wide, 49 % void, the seed's 51.5 %); in 3D the holes go through
+# the depth.
+LATTICE_H = 0.25
+LATTICE_SPAN = LATTICE_H / (N_FINE - 2)
+
+
+def lattice_bar(dim):
+    lower = [-LATTICE_H, -4.0] + ([] if dim == 2 else [-LATTICE_H])
+    upper = [8 + LATTICE_H, 2 + LATTICE_H] + ([] if dim == 2 else
+                                            [2 + LATTICE_H])
+    holes = [(0.075 + 0.5 * i, 0.075 + 0.5 * j) for i in range(16)
+             for j in range(4)]
+    text = f"""# Seed 002 Section 8.1.3 "Performances at different types of coarse elements" (Figs. 23-24),
+# {dim}D{' (plane-strain analogue of the seed 3D bar)' if dim == 2 else ''}: cMPM on boundary B-spline coarse elements.
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+#
+# A lattice bar 8 x 2{'' if dim == 2 else ' x 2'} m (E 1e5, nu 0.4, rho 10, neo-Hookean): struts 0.15 m
+# wide around {len(holes)} square holes of 0.35 m{'' if dim == 2 else ' through the depth'} (49 % void; the seed shows
+# no geometry, see make_cmpm_prms.py), its left face fixed (sticky wall x-
+# over one coarse element), sagging under gravity 5 m/s^2, backward Euler
+# with dt 0.025 s to 1.6 s. cMPM: H = 0.25 m, L = H/2, n = {N_FINE} (knot span
+# s = 0.05 m), 2 particles per knot span and direction.
+# Compared with (same particles):
+#   {name_of('lattice_bar', dim, 'bspline')}  cMPM on B-spline coarse elements
+#   {name_of('lattice_bar', dim, 'fine')}     BSMPM-fine, the reference
+# Errors: /usr/bin/python3 doc/experiments/particle_error.py REFERENCE RUN
+
+set dimension        = {dim}
+set number of bodies = 1
+
+subsection run
+  set name     = cmpm_lattice_bar_{dim}d
+  set end time = 1.6
+end
+
+subsection grid
+  set lower corner = {vec(*lower)}
+  set upper corner = {vec(*upper)}
+  set cell size    = {LATTICE_H!r}
+end
+
+{cmpm_step(0.025, "x-", 1)}
+subsection gravity
+  set acceleration = {vec(*([0, -5] + ([] if dim == 2 else [0])))}
+end
+
+subsection output
+  set interval = 0.1
+end
+
+subsection body 0
+  set particles per cell   = {PARTICLES_PER_SPAN * (N_FINE - 2)}
+  set number of primitives = {1 + len(holes)}
+  subsection primitive 0
+    set type         = box
+    set lower corner = {vec(*([0.0] * dim))}
+    set upper corner = {vec(*([8.0, 2.0] + ([] if dim == 2 else [2.0])))}
+  end
+"""
+    for k, (x, y) in enumerate(holes):
+        low = [x, y] + ([] if dim == 2 else [-0.1])
+        high = [x + 0.35, y + 0.35] + ([] if dim == 2 else [2.1])
+        text += (f"  subsection primitive {k + 1}\n"
+                 f"    set type         = box\n"
+                 f"    set operation    = subtract\n"
+                 f"    set lower corner = {vec(*low)}\n"
+                 f"    set upper corner = {vec(*high)}\n"
+                 f"  end\n")
+    return text + material(2, '1e5').replace(
+        "set Poisson's ratio = 0.3", "set Poisson's ratio = 0.4") + "end\n"
+
+
+def lattice_bar_variant(dim, variant):
+    base = name_of("lattice_bar", dim, "")
+    if variant == "bspline":
+        return f"""# Seed 002 Section 8.1.3, {dim}D: {base} on B-spline coarse elements.
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+include {base}
+
+subsection run
+  set name = cmpm_lattice_bar_{dim}d_bspline
+end
+
+subsection cmpm
+  set coarse element type = B-spline
+end
+"""
+    cells = round(LATTICE_H / LATTICE_SPAN)
+    lower = [-LATTICE_H, -4.0] + ([] if dim == 2 else [-LATTICE_H])
+    upper = [8 + LATTICE_H, 2 + LATTICE_H] + ([] if dim == 2 else
+                                            [2 + LATTICE_H])
+    lower = [x - LATTICE_SPAN / 2 for x in lower]
+    upper = [x + LATTICE_SPAN / 2 for x in upper]
+    header = f"""# Seed 002 Section 8.1.3, {dim}D: BSMPM-fine, the reference of {base}.
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+# Quadratic B-spline MPM on cMPM's fine knot spans (cell s = 0.05 m), shifted
+# by s/2 so that its functions are cMPM's fine patch functions, {PARTICLES_PER_SPAN} particles
+# per cell and direction (the same particles), the left face clamped as the
+# boundary B-spline elements clamp it: {CLAMP_NOTE}"""
+    return bspline_variant(header, base, f"cmpm_lattice_bar_{dim}d_fine",
+                           (lower, upper, LATTICE_SPAN, "quadratic"),
+                           cells + 1, FINE_3D_SOLVER if dim == 3 else "")
+
+
 def contact_collision(dim):
     """A heterogeneous cMPM block thrown obliquely at a free FEM block."""
     if dim == 2:
@@ -637,6 +751,10 @@ def main():
             files[name_of("heterogeneous_cube", dim, variant)] = \
                 heterogeneous_cube_variant(dim, variant)
         files[name_of("contact_collision", dim, "")] = contact_collision(dim)
+        files[name_of("lattice_bar", dim, "")] = lattice_bar(dim)
+        for variant in ("bspline", "fine"):
+            files[name_of("lattice_bar", dim, variant)] = \
+                lattice_bar_variant(dim, variant)
         files[name_of("cube_shearing", dim, "")] = cube_shearing(dim)
         for variant in ("bsmpm", "linear"):
             files[name_of("cube_shearing", dim, variant)] = \

@@ -46,16 +46,20 @@ namespace cmpm_runs
            1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   }
 
-  /** Runs @p prm as results/<name>; returns its cost. */
+  /** Runs @p prm, with the prm text @p entries appended, as
+   *  results/<name>; returns its cost. */
   template <int dim>
   Cost
-  run(const std::string &prm, const std::string &name)
+  run(const std::string &prm,
+      const std::string &name,
+      const std::string &entries = "")
   {
     {
       std::ofstream file(name + ".prm");
       file << "include " << prm << "\nsubsection run\n  set name = " << name
            << "\n  set quiet = true\nend\n"
-           << "subsection output\n  set directory = results\nend\n";
+           << "subsection output\n  set directory = results\nend\n"
+           << entries;
     }
     const double cpu_start = cpu_seconds();
     bfemp_tests::run_scene<dim>(name + ".prm");
