@@ -49,9 +49,9 @@ namespace cmpm_bending_beam_check
               << std::endl;
 
     const auto [cmpm_u, cmpm_sigma] =
-      max_errors(beam + "_fine", beam + "_cmpm");
+      max_errors(beam + "_fine", beam + "_cmpm", true);
     const auto [coarse_u, coarse_sigma] =
-      max_errors(beam + "_fine", beam + "_coarse");
+      max_errors(beam + "_fine", beam + "_coarse", true);
     using bfemp_tests::format;
     dealii::deallog << dim << "D beam, " << cmpm.steps
                     << " steps: max r_u cMPM " << format("%.4f", cmpm_u)

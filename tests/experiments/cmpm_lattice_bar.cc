@@ -40,9 +40,9 @@ main(int argc, char **argv)
             << std::endl;
 
   const auto [boundary_u, boundary_sigma] =
-    cmpm_runs::max_errors("bar_fine", "bar_boundary");
+    cmpm_runs::max_errors("bar_fine", "bar_boundary", true);
   const auto [bspline_u, bspline_sigma] =
-    cmpm_runs::max_errors("bar_fine", "bar_bspline");
+    cmpm_runs::max_errors("bar_fine", "bar_bspline", true);
   dealii::deallog << "max r_u to t = 1 s: boundary B-spline "
                   << format("%.4f", boundary_u) << ", B-spline "
                   << format("%.4f", bspline_u)
