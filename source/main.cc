@@ -2,11 +2,13 @@
 
 #include <bfemp/base/input_error.h>
 #include <bfemp/base/stop_signals.h>
+#include <bfemp/reference/fe_reference_run.h>
 #include <bfemp/scene/scene_parameters.h>
 #include <bfemp/scene/simulation.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -38,6 +40,19 @@ namespace
       }
     const StopSignals stop_signals;
     return simulation.run() ? 0 : 128 + StopSignals::received();
+  }
+
+
+
+  /** The scene's static FE reference (seed 002 Section 8.2). */
+  template <int dim>
+  int
+  fe_reference(const std::string &file, const double cell_size)
+  {
+    SceneParameters<dim> parameters;
+    parameters.read(file);
+    run_fe_reference<dim>(parameters, file, cell_size, std::cout);
+    return 0;
   }
 
 
@@ -75,7 +90,10 @@ namespace
     std::cerr << "usage: bfemp FILE.prm\n"
                  "       bfemp --validate FILE.prm           (check, write "
                  "nothing)\n"
-                 "       bfemp --print-parameters [FOLDER]   (default: .)\n";
+                 "       bfemp --print-parameters [FOLDER]   (default: .)\n"
+                 "       bfemp --fe-reference FILE.prm [CELL_SIZE]\n"
+                 "             (static FE_Q(2) solution of the scene's body, "
+                 "doc/cmpm.md)\n";
     return 2;
   }
 } // namespace
@@ -96,6 +114,24 @@ main(int argc, char **argv)
         {
           print_parameters(argc > 2 ? argv[2] : ".");
           return 0;
+        }
+      if (argument == "--fe-reference")
+        {
+          if (argc < 3 || argc > 4)
+            return usage();
+          file             = argv[2];
+          double cell_size = 0.;
+          if (argc == 4)
+            {
+              char *end = nullptr;
+              cell_size = std::strtod(argv[3], &end);
+              if (end == argv[3] || *end != '\0' || !(cell_size > 0.))
+                throw InputError("--fe-reference: the cell size '" +
+                                 std::string(argv[3]) +
+                                 "' is not a number > 0");
+            }
+          return read_dimension(file) == 2 ? fe_reference<2>(file, cell_size)
+                                           : fe_reference<3>(file, cell_size);
         }
       const bool validate = argument == "--validate";
       file                = validate && argc == 3 ? argv[2] : argument;

@@ -69,19 +69,19 @@ def vec(*values):
     return ", ".join(f"{v:.15g}" for v in values)
 
 
-def material(indent, young):
+def material(indent, young, model="neo-Hookean"):
     pad = " " * indent
     return (f"{pad}subsection material\n"
-            f"{pad}  set model           = neo-Hookean\n"
+            f"{pad}  set model           = {model}\n"
             f"{pad}  set Young's modulus = {young}\n"
             f"{pad}  set Poisson's ratio = 0.3\n"
             f"{pad}  set density         = 10\n"
             f"{pad}end\n")
 
 
-def cmpm_step(dt, walls, layers, local_solve=""):
+def cmpm_step(dt, walls, layers, local_solve="", n_fine=N_FINE):
     """The cMPM discretization (seed 002 Section 8 defaults: boundary
-    B-spline, L = H/2, n = 7), backward Euler with the fixed step @p dt, PIC
+    B-spline, L = H/2, n = 7, or @p n_fine), backward Euler with the fixed step @p dt, PIC
     and sticky @p walls of @p layers coarse elements, as prm text."""
     solve = (f"\n  set local solve              = {local_solve}"
              if local_solve else "")
@@ -89,7 +89,7 @@ def cmpm_step(dt, walls, layers, local_solve=""):
   set enabled                  = true
   set coarse element type      = boundary B-spline
   set coarse node span         = H/2
-  set fine nodes per direction = {N_FINE}{solve}
+  set fine nodes per direction = {n_fine}{solve}
 end
 
 subsection time
@@ -730,6 +730,122 @@ subsection fem body 0
 """
     return text
 
+# Seed 002 Section 8.2.1 and Fig. 27: a beam 8 x 1 x 1 m fixed at both ends
+# under a downward pressure of 1000 N/m^2 on its top face, static and linear
+# elastic, with three materials: E 5e5 Pa in the four middle elliptic column
+# inclusions, 2e4 Pa in the four outer ones, 1e5 Pa in the matrix; coarse
+# mesh 32 x 4 x 4 (H = 0.25 m), local fine mesh 10 x 10 x 10 (n = 12,
+# s = 0.025 m), benchmark: FE_Q(2) on the fine mesh (12.6M unknowns in the
+# seed's Table 4). The seed gives neither the inclusions' sizes nor nu nor
+# rho: bfemp takes eight ellipses of semi-axes 0.35 x 0.25 m centred at
+# x = 0.5, 1.5, ..., 7.5 and mid-height, nu 0.3 and rho 10. In 3D the local
+# fine mesh is 5 x 5 x 5 (n = 7, s = 0.05 m): at s = 0.025 m the FE_Q(2)
+# benchmark has 12.6M unknowns, whose matrix (about 3e9 entries) does not
+# fit 24 GB; the coarse mesh is the seed's.
+TMB_H = 0.25
+TMB_N_FINE = {2: 12, 3: 7}
+TMB_STIFF, TMB_SOFT, TMB_MATRIX = "5e5", "2e4", "1e5"
+# a static step: the backward Euler inertia M / dt^2 against the beam's
+# stiffness is (omega_1 dt)^-2 < 1e-8 for its first bending frequency
+# omega_1 ~ 1 rad/s
+TMB_DT = 1e4
+TMB_SAG_ROOM = 3.0
+
+
+def three_material_beam(dim):
+    n_fine = TMB_N_FINE[dim]
+    span = TMB_H / (n_fine - 2)
+    lower = [-TMB_H, -TMB_SAG_ROOM] + ([] if dim == 2 else [-TMB_H])
+    upper = [8 + TMB_H, 1 + TMB_H] + ([] if dim == 2 else [1 + TMB_H])
+    traction = ["0", "-1000"] + ([] if dim == 2 else ["0"])
+    particles = int(8 / (span / PARTICLES_PER_SPAN)**dim + 0.5)
+    fine_note = (", the seed's\n# 10 x 10 local fine mesh" if dim == 2 else
+                 "; the seed:\n# 0.025 m, see make_cmpm_prms.py")
+    text = f"""# Seed 002 Section 8.2.1 "A heterogeneous beam example of three different materials" (Figs. 27-30, Table 4),
+# {dim}D{' (plane-strain analogue of the seed 3D beam)' if dim == 2 else ''}: cMPM, static and linear elastic.
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+#
+# A beam 8 x 1{'' if dim == 2 else ' x 1'} m (linear elastic, nu 0.3, rho 10) fixed at both ends (sticky
+# walls x-, x+ over the grid's first coarse element outside each end) under
+# a pressure of 1000 N/m^2 on its top face; matrix E {TMB_MATRIX} Pa, the four
+# middle elliptic {'inclusions' if dim == 2 else 'column inclusions (through the depth)'} E {TMB_STIFF} Pa, the four outer ones E {TMB_SOFT} Pa
+# (sizes: see make_cmpm_prms.py). Static: one backward Euler step of {TMB_DT:g} s,
+# whose inertia is negligible (the solution of a linear material is the
+# static equilibrium, to about 1e-8).
+# cMPM: boundary B-spline coarse elements H = {TMB_H:g} m ({int(8 / TMB_H)} x 4{'' if dim == 2 else ' x 4'}), L = H/2 (the seed:
+# H/3, which bfemp does not offer), n = {n_fine} (knot span s = {span:g} m{fine_note}), {PARTICLES_PER_SPAN} particles per knot span and direction ({particles}).
+# Compared with:
+#   bfemp --fe-reference {name_of('three_material_beam', dim, '')}   the seed's benchmark, FE_Q(2) on the
+#       knot spans (output/<run name>_fe_reference)
+#   {name_of('three_material_beam', dim, 'fine')}   BSMPM-fine (quadratic B-splines on the knot spans)
+# Errors: /usr/bin/python3 doc/experiments/particle_error.py REFERENCE RUN
+
+set dimension        = {dim}
+set number of bodies = 1
+
+subsection run
+  set name     = cmpm_three_material_beam_{dim}d
+  set end time = {TMB_DT:g}
+end
+
+subsection grid
+  set lower corner = {vec(*lower)}
+  set upper corner = {vec(*upper)}
+  set cell size    = {TMB_H:g}
+end
+
+{cmpm_step(f"{TMB_DT:g}", "x-, x+", 1, n_fine=n_fine)}
+subsection output
+  set interval = {TMB_DT:g}
+end
+
+subsection body 0
+  set particles per cell         = {PARTICLES_PER_SPAN * (n_fine - 2)}
+  set number of material regions = 8
+  set number of surface loads    = 1
+  subsection primitive 0
+    set type         = box
+    set lower corner = {vec(*([0.0] * dim))}
+    set upper corner = {vec(*([8.0, 1.0, 1.0][:dim]))}
+  end
+  subsection surface load 0
+    set face     = y+
+    set traction = {', '.join(traction)}
+  end
+{material(2, TMB_MATRIX, "linear elastic")}"""
+    for k in range(8):
+        young = TMB_STIFF if 2 <= k <= 5 else TMB_SOFT
+        if dim == 2:
+            shape = (f"    set type      = ellipse\n"
+                     f"    set center    = {vec(k + 0.5, 0.5)}\n"
+                     f"    set semi-axes = {vec(0.35, 0.25)}\n")
+        else:
+            shape = (f"    set type      = elliptic cylinder\n"
+                     f"    set center    = {vec(k + 0.5, 0.5, 0.5)}\n"
+                     f"    set semi-axes = {vec(0.35, 0.25, 0.5)}\n")
+        text += (f"  subsection material region {k}\n{shape}"
+                 f"{material(4, young, 'linear elastic')}  end\n")
+    return text + "end\n"
+
+
+def three_material_beam_variant(dim):
+    base = name_of("three_material_beam", dim, "")
+    span = TMB_H / (TMB_N_FINE[dim] - 2)
+    cells = round(TMB_H / span)
+    lower = [-TMB_H, -TMB_SAG_ROOM] + ([] if dim == 2 else [-TMB_H])
+    upper = [8 + TMB_H, 1 + TMB_H] + ([] if dim == 2 else [1 + TMB_H])
+    lower = [x - span / 2 for x in lower]
+    upper = [x + span / 2 for x in upper]
+    header = f"""# Seed 002 Section 8.2.1, {dim}D: BSMPM-fine, compared with {base}.
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+# Quadratic B-spline MPM on cMPM's fine knot spans (cell s = {span:g} m), shifted
+# by s/2 so that its functions are cMPM's fine patch functions, {PARTICLES_PER_SPAN} particles
+# per cell and direction (the same particles), the ends clamped as cMPM's:
+# {CLAMP_NOTE}"""
+    return bspline_variant(header, base, f"cmpm_three_material_beam_{dim}d_fine",
+                           (lower, upper, span, "quadratic"), cells + 1,
+                           FINE_3D_SOLVER if dim == 3 else "")
+
 
 def name_of(scene, dim, variant):
     suffix = f"_{variant}" if variant else ""
@@ -759,6 +875,10 @@ def main():
         for variant in ("bsmpm", "linear"):
             files[name_of("cube_shearing", dim, variant)] = \
                 cube_shearing_variant(dim, variant)
+        files[name_of("three_material_beam", dim, "")] = \
+            three_material_beam(dim)
+        files[name_of("three_material_beam", dim, "fine")] = \
+            three_material_beam_variant(dim)
     for name, text in files.items():
         with open(os.path.join(target, name), "w") as out:
             out.write(text)

@@ -23,9 +23,11 @@ namespace bfemp
                       "...) whose union/difference is the body's shape.");
     prm.declare_entry("particles per cell",
                       "2",
-                      Patterns::Integer(1, 10),
+                      Patterns::Integer(1, 64),
                       "[-] Particles per grid cell and direction (2 gives 4 "
-                      "per cell in 2D, 8 in 3D).");
+                      "per cell in 2D, 8 in 3D). With cMPM the cell is a "
+                      "coarse element of n - 2 knot spans per direction, so "
+                      "2 per knot span is 2 (n - 2).");
     prm.declare_entry("sampling",
                       "regular",
                       Patterns::Selection("regular|jittered"),

@@ -49,6 +49,22 @@ namespace cmpm_runs
            1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   }
 
+  /** Writes <name>.prm: @p prm run as @p name, quiet, with its output in
+   *  results/, and the prm text @p entries appended. Returns its name. */
+  inline std::string
+  write_prm(const std::string &prm,
+            const std::string &name,
+            const std::string &entries = "")
+  {
+    const std::string file = name + ".prm";
+    std::ofstream     out(file);
+    out << "include " << prm << "\nsubsection run\n  set name = " << name
+        << "\n  set quiet = true\nend\n"
+        << "subsection output\n  set directory = results\nend\n"
+        << entries;
+    return file;
+  }
+
   /** Runs @p prm, with the prm text @p entries appended, as
    *  results/<name>; returns its cost. */
   template <int dim>
@@ -57,15 +73,9 @@ namespace cmpm_runs
       const std::string &name,
       const std::string &entries = "")
   {
-    {
-      std::ofstream file(name + ".prm");
-      file << "include " << prm << "\nsubsection run\n  set name = " << name
-           << "\n  set quiet = true\nend\n"
-           << "subsection output\n  set directory = results\nend\n"
-           << entries;
-    }
-    const double cpu_start = cpu_seconds();
-    bfemp_tests::run_scene<dim>(name + ".prm");
+    const std::string file      = write_prm(prm, name, entries);
+    const double      cpu_start = cpu_seconds();
+    bfemp_tests::run_scene<dim>(file);
     Cost cost;
     cost.cpu_seconds = cpu_seconds() - cpu_start;
 

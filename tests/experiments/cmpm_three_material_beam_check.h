@@ -1,0 +1,110 @@
+#ifndef bfemp_tests_experiments_cmpm_three_material_beam_check_h
+#define bfemp_tests_experiments_cmpm_three_material_beam_check_h
+
+// Seed 002 Section 8.2.1 (the static three-material beam, cMPM against the
+// hexahedral FE_Q(2) benchmark), the runs and checks shared by the reduced
+// test (tests/experiments/cmpm_three_material_beam: the 2D beam) and the
+// full one (tests/validation/cmpm_three_material_beam_full: the 3D beam).
+// On the same particles (prm/cmpm/three_material_beam_<dim>d{,_fine}.prm):
+// - the benchmark: `bfemp --fe-reference` (run_fe_reference) on the knot
+//   spans s, and again on s/2 to show how far the benchmark itself is
+//   converged;
+// - cMPM and BSMPM-fine (quadratic B-splines on the knot spans), one long
+//   backward Euler step each, which is the static solution of the linear
+//   elastic beam.
+// r_u and r_sigma (eq. 38, doc/experiments/particle_error.py) of cMPM and
+// BSMPM-fine against the benchmark, and of cMPM against BSMPM-fine (what
+// the coarsening alone costs), go to the test output (4 digits). Checked:
+// - the benchmark on s and on s/2 agree to r_u below a tenth of the bound;
+// - r_u of cMPM against the benchmark is below @p r_u_bound (seed: 0.003
+//   with L = H/3);
+// - r_u of cMPM against BSMPM-fine is below half of that, so that most of
+//   the error is the fine discretization's, not the coarsening's;
+// - r_sigma of cMPM against the benchmark is below @p r_sigma_bound (seed:
+//   0.048).
+
+#include <bfemp/reference/fe_reference_run.h>
+
+#include <iostream>
+#include <string>
+
+#include "../format.h"
+#include "cmpm_runs.h"
+
+namespace cmpm_three_material_beam_check
+{
+  using cmpm_runs::Cost;
+  using cmpm_runs::max_errors;
+  using cmpm_runs::print_cost;
+  using cmpm_runs::run;
+
+  /** The FE benchmark of @p prm on cells of @p cell_size (0: the knot
+   *  span) as results/<name>_fe_reference. */
+  template <int dim>
+  void
+  fe_reference(const std::string &prm,
+               const std::string &name,
+               const double       cell_size)
+  {
+    // the run name gives the folder results/<name>_fe_reference
+    const std::string           file = cmpm_runs::write_prm(prm, name);
+    bfemp::SceneParameters<dim> parameters;
+    parameters.read(file);
+    bfemp::run_fe_reference<dim>(parameters, file, cell_size, std::cout);
+  }
+
+  template <int dim>
+  void
+  check(const double r_u_bound, const double r_sigma_bound)
+  {
+    const std::string prefix = std::string(BFEMP_SOURCE_DIR) +
+                               "/prm/cmpm/three_material_beam_" +
+                               std::to_string(dim) + "d";
+    const std::string           beam = "beam_" + std::to_string(dim) + "d";
+    bfemp::SceneParameters<dim> scene;
+    scene.read(prefix + ".prm");
+    const double s =
+      scene.grid.cell_size / (scene.cmpm.n_fine - 2.); // the knot span
+
+    fe_reference<dim>(prefix + ".prm", beam, s);
+    fe_reference<dim>(prefix + ".prm", beam + "_half", s / 2);
+    const Cost cmpm = run<dim>(prefix + ".prm", beam + "_cmpm");
+    const Cost fine = run<dim>(prefix + "_fine.prm", beam + "_fine");
+    print_cost("cMPM", cmpm);
+    print_cost("BSMPM-fine", fine);
+
+    const std::string fe        = beam + "_fe_reference";
+    const auto [fe_u, fe_sigma] = max_errors(beam + "_half_fe_reference", fe);
+    const auto [cmpm_u, cmpm_sigma] = max_errors(fe, beam + "_cmpm");
+    const auto [fine_u, fine_sigma] = max_errors(fe, beam + "_fine");
+    const auto [coarse_u, coarse_sigma] =
+      max_errors(beam + "_fine", beam + "_cmpm");
+    using bfemp_tests::format;
+    const auto row =
+      [](const std::string &what, const double u, const double sigma) {
+        dealii::deallog << what << ": r_u " << format("%.4f", u) << ", r_sigma "
+                        << format("%.4f", sigma) << std::endl;
+      };
+    dealii::deallog << dim << "D three-material beam, knot span s = " << s
+                    << " m, Newton iterations cMPM " << cmpm.newton_iterations
+                    << ", BSMPM-fine " << fine.newton_iterations << std::endl;
+    row("FE_Q(2) on s against FE_Q(2) on s/2", fe_u, fe_sigma);
+    row("cMPM against FE_Q(2) (seed 3D: 0.003, 0.048)", cmpm_u, cmpm_sigma);
+    row("BSMPM-fine against FE_Q(2)", fine_u, fine_sigma);
+    row("cMPM against BSMPM-fine", coarse_u, coarse_sigma);
+    bfemp_tests::check(fe_u < 0.1 * r_u_bound,
+                       "the benchmark on s agrees with s/2 to r_u below " +
+                         format("%g", 0.1 * r_u_bound));
+    bfemp_tests::check(cmpm_u < r_u_bound,
+                       "r_u of cMPM against the benchmark below " +
+                         format("%g", r_u_bound));
+    bfemp_tests::check(coarse_u < 0.5 * r_u_bound,
+                       "r_u of cMPM against BSMPM-fine below " +
+                         format("%g", 0.5 * r_u_bound));
+    bfemp_tests::check(cmpm_sigma < r_sigma_bound,
+                       "r_sigma of cMPM against the benchmark below " +
+                         format("%g", r_sigma_bound));
+  }
+} // namespace cmpm_three_material_beam_check
+
+#endif
