@@ -68,6 +68,16 @@ namespace bfemp
 
 
 
+    std::string
+    nested(const std::string &where, const std::string &child)
+    {
+      if (!where.empty() && where.back() == '\'')
+        return where.substr(0, where.size() - 1) + "/" + child + "'";
+      return where + "/" + child;
+    }
+
+
+
     template void
     declare_point<2>(ParameterHandler &,
                      const std::string &,

@@ -2,6 +2,7 @@
 #include <bfemp/base/prm_include.h>
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -32,6 +33,30 @@ namespace bfemp
       return "";
     }
 
+    /** Refuses a line with a control byte other than white space: the
+     *  file is binary (an executable, an image, a checkpoint), not a
+     *  parameter file, and deal.II's message would quote its bytes. */
+    void
+    require_text(const std::string &line,
+                 const std::string &file,
+                 const unsigned int number)
+    {
+      for (std::size_t column = 0; column < line.size(); ++column)
+        {
+          const unsigned char byte = static_cast<unsigned char>(line[column]);
+          if ((byte < 0x20 && !std::isspace(byte)) || byte == 0x7f)
+            {
+              char code[8];
+              std::snprintf(code, sizeof(code), "0x%02x", byte);
+              throw InputError(file + ": line " + std::to_string(number) +
+                               ", column " + std::to_string(column + 1) +
+                               ": byte " + code +
+                               " is not text; a parameter file is plain text "
+                               "(is this the file you meant?)");
+            }
+        }
+    }
+
     void
     expand(const std::string &file, const unsigned int depth, ExpandedPrm &out)
     {
@@ -40,6 +65,7 @@ namespace bfemp
       bool          continued = false;
       for (unsigned int number = 1; std::getline(input, line); ++number)
         {
+          require_text(line, file, number);
           const std::string path = continued ? "" : include_path(line);
           const std::string code = trimmed(line.substr(0, line.find('#')));
           continued              = !code.empty() && code.back() == '\\';

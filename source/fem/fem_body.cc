@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/parameter_tools.h>
 #include <bfemp/fem/fem_body.h>
 
 namespace bfemp
@@ -7,7 +8,9 @@ namespace bfemp
   FemBody<dim>::FemBody(const FemBodyParameters<dim> &parameters,
                         const std::string            &where)
     : rho(parameters.material.density)
-    , fem_mesh(std::make_unique<FemMesh<dim>>(parameters.mesh, where + "/mesh"))
+    , fem_mesh(
+        std::make_unique<FemMesh<dim>>(parameters.mesh,
+                                       parameter_tools::nested(where, "mesh")))
     , body_material(create_material<dim>(parameters.material.model,
                                          parameters.material.moduli()))
     , node_masses(fem_mesh->lumped_masses(rho))
@@ -28,7 +31,8 @@ namespace bfemp
           }
         catch (const std::exception &e)
           {
-            throw InputError(where + "/mesh: element " +
+            throw InputError(parameter_tools::nested(where, "mesh") +
+                             ": element " +
                              std::to_string(simplex_elements.size()) +
                              " is degenerate or inverted (" + e.what() +
                              "); FEM meshes need elements of positive volume");

@@ -1,6 +1,9 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/io/output_parameters.h>
 
+#include <filesystem>
+#include <fstream>
+
 namespace bfemp
 {
   void
@@ -62,5 +65,31 @@ namespace bfemp
                   "interval",
                   to_input_string(interval),
                   "must be >= 0 [s]");
+  }
+
+
+  void
+  OutputParameters::create_folder(const std::string &folder) const
+  {
+    const std::string where = "subsection 'output', entry 'directory' = '" +
+                              directory + "': cannot write the folder '" +
+                              folder + "'";
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error)
+      throw InputError(where + ": " + error.message() +
+                       "; allowed: a folder bfemp may create and write");
+    // a probe file: permissions alone do not tell (root, read-only mounts)
+    const std::string probe = folder + "/.bfemp_write_probe";
+    bool              written;
+    {
+      std::ofstream out(probe);
+      written = static_cast<bool>(out << "probe\n");
+    }
+    std::filesystem::remove(probe, error);
+    if (!written)
+      throw InputError(where +
+                       ": files cannot be created in it; allowed: a folder "
+                       "bfemp may create and write");
   }
 } // namespace bfemp

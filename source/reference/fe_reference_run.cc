@@ -77,8 +77,10 @@ namespace bfemp
 
     const std::string folder =
       parameters.output.directory + "/" + parameters.run.name + "_fe_reference";
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
+    // an earlier benchmark's files go; failures show in create_folder
+    std::error_code ignored;
+    std::filesystem::remove_all(folder, ignored);
+    parameters.output.create_folder(folder);
     ParticleOutput<dim> output(folder, materials);
     output.write(particles, 0., 0);
     const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();

@@ -569,7 +569,7 @@ namespace bfemp
   void
   Simulation<dim>::prepare_output_folder(const bool resuming)
   {
-    std::filesystem::create_directories(output_folder);
+    parameters.output.create_folder(output_folder);
     if (resuming)
       {
         // The continued run keeps the earlier output; its parameter file

@@ -44,6 +44,14 @@ namespace bfemp
     /** The n-th subsection name of a numbered family: "body 0", "body 1". */
     std::string
     numbered(const std::string &family, const unsigned int index);
+
+    /**
+     * The place of subsection @p child inside the one @p where names, for
+     * messages: "f.prm: subsection 'fem body 0'" becomes "f.prm: subsection
+     * 'fem body 0/mesh'", as deal.II writes subsection paths.
+     */
+    std::string
+    nested(const std::string &where, const std::string &child);
   } // namespace parameter_tools
 } // namespace bfemp
 

@@ -23,6 +23,15 @@ namespace bfemp
 
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Creates @p folder (a run's folder inside 'directory') if needed and
+     * makes sure files can be written into it; throws InputError naming
+     * subsection 'output', entry 'directory', if not (a read-only or
+     * missing mount, a path through a file).
+     */
+    void
+    create_folder(const std::string &folder) const;
   };
 } // namespace bfemp
 
