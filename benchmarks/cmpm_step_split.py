@@ -17,7 +17,16 @@ of seed 002 Section 8.1.4, BSMPM-fine):
 Each run takes a few steps of the scene on one thread; the figures are means
 over the steps after the first.
 
+With --seed-size it also runs the seed's own size, the 3D bending beam of
+seed 002 Section 8.1.2 (prm/cmpm/bending_beam_3d{,_fine}.prm: 640,000
+particles, cMPM 40 x 4 x 4 coarse elements against BSMPM-fine with 293K
+unknowns), two steps each on all threads: cMPM, BSMPM-fine with CG + ML
+AMG (the prm's solver) and BSMPM-fine with CHOLMOD (12.4 GB). The speed-up
+of cMPM at two sizes then comes from one invocation. About 25 minutes; on a
+machine with less than 16 GB the CHOLMOD run is left out.
+
   /usr/bin/python3 benchmarks/cmpm_step_split.py [--build build] [--quick]
+                                                 [--seed-size]
 
 writes benchmarks/results/cmpm_step_split.json (see doc/performance.md).
 """
@@ -142,31 +151,36 @@ end
 """
 
 
-def run(build, folder, name, text):
-    """Runs one scene (text) as results/<name> in folder on one thread and
-    returns its diagnostics rows."""
+def run(build, folder, name, text, threads=1):
+    """Runs one scene (text) as results/<name> in folder on @p threads
+    threads (0: all) and returns its diagnostics rows and peak memory."""
     prm = os.path.join(folder, name + ".prm")
     with open(prm, "w") as f:
         f.write(text)
         f.write(f"subsection run\n  set name = {name}\n  set quiet = true\n"
-                "  set threads = 1\nend\n"
+                f"  set threads = {threads}\nend\n"
                 "subsection output\n  set directory = results\n"
                 "  set interval = 100\n  set write particles = false\n"
                 "  set write grid = false\n  set diagnostics interval = 1\nend\n")
     start = time.time()
-    subprocess.run([os.path.join(build, "bfemp"), prm], cwd=folder, check=True,
-                   stdout=subprocess.DEVNULL)
+    process = subprocess.Popen([os.path.join(build, "bfemp"), prm], cwd=folder,
+                               stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(process.pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"cmpm_step_split: {name} failed")
     elapsed = time.time() - start
     with open(os.path.join(folder, "results", name, "diagnostics.csv")) as f:
         rows = [r for r in csv.DictReader(f)]
-    return rows[1:], elapsed  # row 0 is t = 0
+    # row 0 is t = 0
+    return rows[1:], elapsed, usage.ru_maxrss / 1024.0 / 1024.0
 
 
 def split(rows):
-    """Means per step over the steps after the first."""
+    """Means per step over the steps after the first, and the first step."""
     steps = rows[1:]
     wall = [float(b["wall_time"]) - float(a["wall_time"])
             for a, b in zip(rows[:-1], rows[1:])]
+    first_step = float(rows[0]["wall_time"])
     mean = lambda values: sum(values) / len(values)
     assembly = mean([float(r["assembly_time"]) for r in steps])
     factorization = mean([float(r["factorization_time"]) for r in steps])
@@ -181,7 +195,24 @@ def split(rows):
         "assembly_s": assembly,
         "factorization_and_solve_s": factorization + solve,
         "line_search_s": line_search,
+        "first_step_s": first_step,
     }
+
+
+def seed_size_runs():
+    """The seed's 3D bending beam, two steps: cMPM, BSMPM-fine with the
+    prm's CG + ML AMG and, with enough memory, with CHOLMOD."""
+    two_steps = "subsection run\n  set end time = 0.05\nend\n"
+    prefix = os.path.join(ROOT, "prm", "cmpm", "bending_beam_3d")
+    runs = [("cMPM", f"include {prefix}.prm\n{two_steps}"),
+            ("BSMPM-fine CG + ML AMG",
+             f"include {prefix}_fine.prm\n{two_steps}")]
+    memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    if memory > 16e9:
+        runs.append(("BSMPM-fine CHOLMOD",
+                     f"include {prefix}_fine.prm\n{two_steps}"
+                     "subsection solver\n  set linear solver = CHOLMOD\nend\n"))
+    return runs
 
 
 def main():
@@ -190,6 +221,9 @@ def main():
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--quick", action="store_true",
                         help="2D only, 3 steps (a smoke run)")
+    parser.add_argument("--seed-size", action="store_true",
+                        help="also the seed's 3D bending beam (640,000 "
+                        "particles, about 25 minutes)")
     parser.add_argument("--output",
                         default=os.path.join(ROOT, "benchmarks", "results",
                                              "cmpm_step_split.json"))
@@ -201,20 +235,25 @@ def main():
         beam_2d = f.read() + f"subsection run\n  set end time = {end_time}\nend\n"
     regions = "".join(REGION_3D.format(k=k, x=0.3 + 0.2 * k) for k in range(4))
     beam_3d = BEAM_3D.format(end_time=end_time, regions=regions)
-    scenes = [("2d", beam_2d, FINE_2D)]
+    methods = (("cMPM", ""), ("cMPM full Newton", FULL_NEWTON))
+    scenes = [("2d", 1, [(m, beam_2d + e) for m, e in methods] +
+               [("BSMPM-fine", beam_2d + FINE_2D)])]
     if not arguments.quick:
-        scenes.append(("3d", beam_3d, FINE_3D))
+        scenes.append(("3d", 1, [(m, beam_3d + e) for m, e in methods] +
+                       [("BSMPM-fine", beam_3d + FINE_3D)]))
+    if arguments.seed_size:
+        scenes.append(("3d seed size", 0, seed_size_runs()))
 
     results = []
     with tempfile.TemporaryDirectory() as folder:
-        for label, text, fine in scenes:
-            for method, extra in (("cMPM", ""), ("cMPM full Newton", FULL_NEWTON),
-                                  ("BSMPM-fine", fine)):
-                rows, elapsed = run(arguments.build, folder,
-                                    f"{label}_{method.replace(' ', '_')}",
-                                    text + extra)
+        for label, threads, runs in scenes:
+            for method, text in runs:
+                name = f"{label}_{method}".replace(" ", "_").replace("+", "")
+                rows, elapsed, memory = run(arguments.build, folder, name,
+                                            text, threads)
                 entry = {"scene": label, "method": method, "steps": len(rows),
-                         "run_s": elapsed}
+                         "threads": threads or os.cpu_count(),
+                         "run_s": elapsed, "peak_memory_gb": memory}
                 entry.update(split(rows))
                 results.append(entry)
                 print(json.dumps(entry), flush=True)
@@ -228,7 +267,7 @@ def main():
     with open(arguments.output + ".tmp", "w") as f:
         json.dump({"benchmark": "cmpm_step_split",
                    "date": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
-                   "commit": commit, "cpu": cpu, "threads": 1,
+                   "commit": commit, "cpu": cpu,
                    "quick": arguments.quick, "results": results}, f, indent=1)
     os.replace(arguments.output + ".tmp", arguments.output)
 
