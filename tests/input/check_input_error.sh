@@ -13,6 +13,10 @@
 #            output folder (the default "output/<run name>") or file was
 #            written.
 #
+#   check_input_error.sh --option OPTION BFEMP PRM FRAGMENT...
+#       The same for 'bfemp OPTION PRM' (a header line "# option: OPTION"
+#       in the prm file, e.g. --fe-reference).
+#
 #   check_input_error.sh --expect-success BFEMP PRM
 #       Positive control. Passes only if bfemp exits with status 0 and wrote
 #       its output folder "output/" (non-empty) into the scratch directory,
@@ -26,6 +30,12 @@ mode=error
 if [ "$1" = "--expect-success" ]; then
   mode=success
   shift
+fi
+# --option OPTION: run 'bfemp OPTION PRM' (e.g. --fe-reference)
+option=
+if [ "$1" = "--option" ]; then
+  option=$2
+  shift 2
 fi
 if [ $# -lt 2 ] || { [ "$mode" = error ] && [ $# -lt 3 ]; }; then
   echo "usage: $0 BFEMP PRM FRAGMENT..." >&2
@@ -53,8 +63,12 @@ trap 'exit 130' INT TERM HUP
 work=$scratch/work
 mkdir "$work" || exit 2
 
-echo "check_input_error: running '$bfemp' '$prm' in $work"
-(cd "$work" && exec "$bfemp" "$prm") >"$scratch/stdout" 2>"$scratch/stderr"
+echo "check_input_error: running '$bfemp' $option '$prm' in $work"
+if [ -n "$option" ]; then
+  (cd "$work" && exec "$bfemp" "$option" "$prm") >"$scratch/stdout" 2>"$scratch/stderr"
+else
+  (cd "$work" && exec "$bfemp" "$prm") >"$scratch/stdout" 2>"$scratch/stderr"
+fi
 status=$?
 left_behind=$(cd "$work" && find . ! -name . | sort)
 
