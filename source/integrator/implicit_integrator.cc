@@ -508,16 +508,25 @@ namespace bfemp
 
   template <int dim>
   void
-  ImplicitIntegrator<dim>::measure_contact(const Vector<double> &u)
+  ImplicitIntegrator<dim>::measure_barrier(const Vector<double> &u)
   {
-    if (!with_contact)
-      return;
     const auto m                  = barrier->measure(u);
     last_contact.pairs            = m.pairs;
     last_contact.particles        = m.particles;
     last_contact.minimum_distance = m.minimum_distance;
     last_contact.barrier_energy   = m.energy;
     last_contact.force            = m.force;
+  }
+
+
+
+  template <int dim>
+  void
+  ImplicitIntegrator<dim>::measure_contact(const Vector<double> &u)
+  {
+    if (!with_contact)
+      return;
+    measure_barrier(u);
     last_contact.particles_inside = contact_geometry->particles_inside(u);
     if (with_friction)
       {
@@ -643,12 +652,22 @@ namespace bfemp
     number_unknowns();
     contact_geometry->begin_step(0.);
     const Vector<double> at_start(dofs.n_dofs());
-    return contact_geometry->particles_inside(at_start) +
-           (contact_geometry->minimum_distance(
-              at_start,
-              contact_parameters.activation_distance) > 0.
-              ? 0
-              : 1);
+    const unsigned int   touching =
+      contact_geometry->particles_inside(at_start) +
+      (contact_geometry->minimum_distance(
+         at_start,
+         contact_parameters.activation_distance) > 0.
+         ? 0
+         : 1);
+    if (touching == 0)
+      {
+        // The state at t = 0 for the first diagnostics row: a body that
+        // starts closer than dhat to an FEM boundary stores barrier energy
+        // (eq. 27) that the first step turns into motion.
+        barrier->begin_step(at_start);
+        measure_barrier(at_start);
+      }
+    return touching;
   }
 
 

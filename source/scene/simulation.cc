@@ -801,7 +801,17 @@ namespace bfemp
     check_state(state);
     if (!resumed)
       {
-        diagnostics_writer.write(step, time, 0., state, progress.wall_time());
+        // the contact columns of t = 0: the barrier of bodies that start
+        // within dhat (measured by the check that bodies start apart)
+        diagnostics_writer.write(step,
+                                 time,
+                                 0.,
+                                 state,
+                                 progress.wall_time(),
+                                 NewtonStatistics(),
+                                 0,
+                                 contact_state ? *contact_state :
+                                                 ContactStatistics<dim>());
         write_body_diagnostics(body_writer);
         write_snapshot(time);
         if (run.test_mode)

@@ -124,7 +124,9 @@ namespace bfemp
 
     /**
      * Particles inside an FEM element or at distance 0 from an FEM
-     * boundary now (the check at t = 0: bodies must not overlap).
+     * boundary now (the check at t = 0: bodies must not overlap). If there
+     * are none, also measures the barrier at the start, so that
+     * contact_statistics() describes t = 0 until the first step.
      */
     unsigned int
     particles_touching_fem();
@@ -211,6 +213,11 @@ namespace bfemp
     /** dt v^n, or the substeps' dt v*_k for their grid nodes. */
     Tensor<1, dim>
     free_advance(const unsigned int node, const double dt) const;
+
+    /** The barrier's pairs, distances, energy and forces at @p u into
+     *  the contact statistics. */
+    void
+    measure_barrier(const Vector<double> &u);
 
     /** Records the contact state at the step's solution u. */
     void
