@@ -19,8 +19,11 @@
 //   (2D; in 3D the benchmark on s/2 does not fit the machine);
 // - r_u of cMPM against the benchmark is below @p r_u_bound (seed: 0.003
 //   with L = H/3);
-// - r_u of cMPM against BSMPM-fine is below half of that, so that most of
-//   the error is the fine discretization's, not the coarsening's;
+// - what the coarsening adds is small: cMPM is at most a quarter of the
+//   bound further from the benchmark than BSMPM-fine on the same particles
+//   (r_u(cMPM) < r_u(BSMPM-fine) + r_u_bound / 4). In 2D BSMPM-fine is the
+//   closer one (s = 0.025 m), in 3D cMPM (s = 0.05 m, where the fine
+//   B-spline clamp of one knot span costs more, doc/cmpm.md);
 // - r_sigma of cMPM against the benchmark is below @p r_sigma_bound (seed:
 //   0.048).
 
@@ -108,9 +111,10 @@ namespace cmpm_three_material_beam_check
     bfemp_tests::check(cmpm_u < r_u_bound,
                        "r_u of cMPM against the benchmark below " +
                          format("%g", r_u_bound));
-    bfemp_tests::check(coarse_u < 0.5 * r_u_bound,
-                       "r_u of cMPM against BSMPM-fine below " +
-                         format("%g", 0.5 * r_u_bound));
+    bfemp_tests::check(cmpm_u < fine_u + 0.25 * r_u_bound,
+                       "cMPM at most " + format("%g", 0.25 * r_u_bound) +
+                         " further from the benchmark (r_u) than "
+                         "BSMPM-fine");
     bfemp_tests::check(cmpm_sigma < r_sigma_bound,
                        "r_sigma of cMPM against the benchmark below " +
                          format("%g", r_sigma_bound));
