@@ -513,6 +513,52 @@ namespace bfemp
                            to_input_string(cell->center()));
         volumes[cell->active_cell_index()] = det / factorial;
       }
+    check_not_folded(what);
+  }
+
+
+
+  template <int dim>
+  void
+  FemMesh<dim>::check_not_folded(const std::string &what) const
+  {
+    // Each element was reoriented to a positive volume above, so a mesh
+    // written with either node order is accepted. An element turned inside
+    // out with respect to its neighbours (a folded mesh: the two overlap)
+    // shows at their shared face: both remaining nodes lie on the same side
+    // of it.
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f))
+            continue;
+          const auto neighbor = cell->neighbor(f);
+          if (neighbor->active_cell_index() < cell->active_cell_index())
+            continue;
+          const auto                      face = cell->face(f);
+          std::array<Point<dim>, dim + 1> x;
+          for (unsigned int i = 0; i < dim; ++i)
+            x[i] = positions[vertex_to_node[face->vertex_index(i)]];
+          const auto side = [&](const auto &element) {
+            for (const unsigned int v : element->vertex_indices())
+              {
+                bool on_face = false;
+                for (unsigned int i = 0; i < dim; ++i)
+                  on_face = on_face ||
+                            element->vertex_index(v) == face->vertex_index(i);
+                if (!on_face)
+                  x[dim] = positions[vertex_to_node[element->vertex_index(v)]];
+              }
+            return orientation<dim>(x);
+          };
+          if (side(cell) * side(neighbor) > 0.)
+            throw InputError(what + " folds over itself: the elements at " +
+                             to_input_string(cell->center()) + " and " +
+                             to_input_string(neighbor->center()) +
+                             " lie on the same side of their shared face "
+                             "(inverted elements); FEM meshes must not "
+                             "overlap themselves");
+        }
   }
 
 

@@ -162,6 +162,11 @@ namespace bfemp
     void
     set_up_nodes_and_elements(const std::string &what);
 
+    /** Refuses a mesh in which an element is inverted with respect to a
+     *  neighbour (InputError naming both). */
+    void
+    check_not_folded(const std::string &what) const;
+
     void
     set_up_boundary();
 
