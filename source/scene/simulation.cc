@@ -810,8 +810,8 @@ namespace bfemp
                                  progress.wall_time(),
                                  NewtonStatistics(),
                                  0,
-                                 contact_state ? *contact_state :
-                                                 ContactStatistics<dim>());
+                                 contact_state ? *contact_state
+                                               : ContactStatistics<dim>());
         write_body_diagnostics(body_writer);
         write_snapshot(time);
         if (run.test_mode)

@@ -43,6 +43,22 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+def load_study_tool():
+    """tools/bfemp-study, for its prm writer (a variant: the base included,
+    the entries set in their subsections)."""
+    import importlib.machinery
+    import importlib.util
+    path = os.path.join(HERE, "..", "..", "tools", "bfemp-study")
+    loader = importlib.machinery.SourceFileLoader("bfemp_study", path)
+    module = importlib.util.module_from_spec(
+        importlib.util.spec_from_loader("bfemp_study", loader))
+    loader.exec_module(module)
+    return module
+
+
+prm_text = load_study_tool().prm_text
+
+
 # The matrix: (name, scene, {entry: value}, in the ci subset). Scales of the
 # base scenes: body 0.2 m, dx 0.05 m, explicit CFL step of the block about
 # 1.4e-3 s (c_p = 37 m/s), implicit step 2e-3 s.
@@ -110,21 +126,6 @@ def cases(dim):
         add(f"{kernel} kernel", "drop", {"grid/kernel": kernel})
     add("gravity 0", "drop", {"gravity/acceleration": zero})
     return c
-
-
-def prm_text(base, entries, name, folder):
-    lines = [f"include {base}"]
-    for entry, value in list(entries.items()) + [
-            ("run/name", name), ("run/quiet", "true"),
-            ("output/directory", folder)]:
-        path = entry.split("/")
-        for depth, subsection in enumerate(path[:-1]):
-            lines.append("  " * depth + f"subsection {subsection}")
-        text = format(value, ".17g") if isinstance(value, float) else str(value)
-        lines.append("  " * (len(path) - 1) + f"set {path[-1]} = {text}")
-        for depth in reversed(range(len(path) - 1)):
-            lines.append("  " * depth + "end")
-    return "\n".join(lines) + "\n"
 
 
 def read_rows(path):

@@ -138,9 +138,9 @@ namespace
     using bfemp_tests::format;
     deallog << dim << "D bar: " << statistics.n_cells << " cells, "
             << statistics.n_dofs << " unknowns, " << statistics.n_constrained
-            << " held by the walls, " << statistics.solver
-            << "; max |u_i| " << format("%.6e", statistics.max_displacement)
-            << " (exact " << format("%.6e", u_x(L)) << ")" << std::endl;
+            << " held by the walls, " << statistics.solver << "; max |u_i| "
+            << format("%.6e", statistics.max_displacement) << " (exact "
+            << format("%.6e", u_x(L)) << ")" << std::endl;
 
     bfemp_tests::RandomNumbers random(7);
     std::vector<Point<dim>>    X;
