@@ -101,10 +101,14 @@ namespace bfemp
                                                                   cmpm);
         barrier          = std::make_unique<BarrierTerm<dim>>(*contact_geometry,
                                                      contact_parameters);
+        // The barrier is a force of the state x^n, but with the contact
+        // impulse at the step's end it stays out of a^n like friction.
         register_term(
           *barrier,
-          [this](const double s, const double) { barrier->set_scale(s); },
-          true);
+          [this](const double s, const double) {
+            barrier->set_scale(s * contact_factor());
+          },
+          !scheme.contact_at_step_end);
       }
     if (with_friction)
       {
@@ -115,7 +119,7 @@ namespace bfemp
         register_term(
           *friction,
           [this](const double s, const double dt) {
-            friction->set_scale(s, dt);
+            friction->set_scale(s * contact_factor(), dt);
           },
           false);
       }

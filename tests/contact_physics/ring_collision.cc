@@ -22,7 +22,9 @@
 // The MPM ring's mass is that of its particles, the FEM ring's that of the
 // polygonal mesh, so p(0) = 10.3 kg m/s, not 0.
 //
-// Checked for midpoint Newmark and backward Euler:
+// Checked for midpoint Newmark with its two contact impulses (`time/Newmark
+// contact impulse`: at the step's end, the default, and the trapezoidal
+// average of BFEMP eq. 21) and for backward Euler:
 //  - the run finishes, one row per step, det F > 0;
 //  - total momentum: the elastic and barrier gradients sum to zero over the
 //    unknowns (translation invariance, kept by the PSD projections), so a
@@ -35,19 +37,20 @@
 //    carries no contact measurement; measured minimum 0.9 dhat); contact
 //    pairs appear (t = 0.028 s) and are gone again before the end (last
 //    contact at t = 0.3 s; the paper: 0.025 .. 0.293 s); both rings move
-//    back at the end (mean v_x: -2.6 / +2.6 m/s Newmark, -2.2 / +2.2 m/s
-//    backward Euler);
+//    back at the end (mean v_x: -2.5 / +2.6 m/s Newmark, -2.6 / +2.6 m/s
+//    trapezoidal, -2.2 / +2.2 m/s backward Euler);
 //  - the FEM ring is moved by contact alone, so its momentum change equals
 //    the time integral of the contact force on it from the diagnostics
-//    (trapezoidal for Newmark, end-of-step for backward Euler), checked to
+//    (trapezoidal or end-of-step as the step integrates it), checked to
 //    n_steps M eps_d (the difference is the ring's share of the final
 //    Newton gradients; measured < 1e-9 M_fem v0);
 //  - energy (kinetic + elastic + barrier): never above E_0 (1e-6 relative);
-//    the fraction lost is printed: Newmark 22 % by the end of the collision
-//    (the paper: 8.6 % with APIC, at 2.5x finer resolution across the ring
-//    and a 20x smaller scaled step), with single-step rises of up to 1 % of
-//    E_0 while contacts start and end; backward Euler loses more (53 %).
-// Run time about 13 s in Release on 2 cores.
+//    the fraction lost is printed: Newmark 28 % by the end of the collision
+//    and no rise in any step; trapezoidal 22 % (the paper: 8.6 % with APIC,
+//    at 2.5x finer resolution across the ring and a 20x smaller scaled
+//    step), with single-step rises of up to 1 % of E_0 while contacts start
+//    and end; backward Euler loses more (53 %): the ordering is checked.
+// Run time about 20 s in Release on 2 cores.
 
 #include <bfemp/particles/particle_layout.h>
 
@@ -71,11 +74,16 @@ namespace
   constexpr double end_time = 0.34;
 
   std::string
-  scene(const std::string &name, const std::string &integrator)
+  scene(const std::string &name,
+        const std::string &integrator,
+        const std::string &contact_impulse)
   {
     std::ostringstream prm;
     prm << std::setprecision(17) << head(2, 1, 1, name, end_time)
-        << fixed_step(integrator, dt) << solver(eps_d, true)
+        << fixed_step(integrator, dt)
+        << "subsection time\n  set Newmark contact impulse = "
+        << contact_impulse << "\nend\n"
+        << solver(eps_d, true)
         << "subsection grid\n  set lower corner = -1.2, -0.8\n"
            "  set upper corner = 0.4, 0.8\n  set cell size = "
         << dx
@@ -146,14 +154,21 @@ namespace
   };
 
   Energies
-  check_run(const std::string &integrator, const std::string &name)
+  check_run(const std::string &integrator,
+            const std::string &name,
+            const std::string &contact_impulse = "end of step")
   {
-    const bool        newmark = integrator == "implicit Newmark";
-    const std::string prefix  = integrator + ": ";
-    write(name + ".prm", scene(name, integrator));
+    const bool trapezoidal =
+      integrator == "implicit Newmark" && contact_impulse == "trapezoidal";
+    const std::string label =
+      integrator + (integrator == "implicit Newmark"
+                      ? " (" + contact_impulse + " contact impulse)"
+                      : std::string());
+    const std::string prefix = label + ": ";
+    write(name + ".prm", scene(name, integrator, contact_impulse));
     const End end = simulate(name + ".prm");
-    deallog << integrator << ", dt = " << rounded(dt) << " s, "
-            << end.n_particles << " particles" << std::endl;
+    deallog << label << ", dt = " << rounded(dt) << " s, " << end.n_particles
+            << " particles" << std::endl;
     if (!end.error.empty())
       deallog << "error: " << end.error << std::endl;
     bfemp_tests::check(end.error.empty(),
@@ -227,15 +242,16 @@ namespace
     // The FEM ring is moved by contact alone: its momentum is the time
     // integral of the barrier force on it (the force of the state at the
     // start of a step is that of the end of the previous one: the particles
-    // sit where the G2P put them), trapezoidal for Newmark, at the end of
-    // each step for backward Euler.
+    // sit where the G2P put them), trapezoidal for Newmark's trapezoidal
+    // contact impulse, at the end of each step otherwise. (With a constant
+    // step and no force at the first and last rows both sums agree.)
     Tensor<1, 2> impulse;
     for (std::size_t k = 1; k < n; ++k)
       {
         const Tensor<1, 2> F_end({c[9][k], c[10][k]});
         const Tensor<1, 2> F_start({c[9][k - 1], c[10][k - 1]});
-        impulse +=
-          (c[0][k] - c[0][k - 1]) * (newmark ? 0.5 * (F_start + F_end) : F_end);
+        impulse += (c[0][k] - c[0][k - 1]) *
+                   (trapezoidal ? 0.5 * (F_start + F_end) : F_end);
       }
     const Tensor<1, 2> fem_change =
       end.fem_momentum - Tensor<1, 2>({-speed * end.fem_mass, 0.});
@@ -288,9 +304,18 @@ main(int argc, char **argv)
   std::filesystem::remove_all("results");
 
   const Energies newmark = check_run("implicit Newmark", "newmark");
-  const Energies euler   = check_run("implicit backward Euler", "euler");
-  bfemp_tests::check(std::abs(newmark.E0 - euler.E0) <= 1e-12 * newmark.E0,
-                     "both runs start with the same energy");
-  bfemp_tests::check(euler.E_end < newmark.E_end,
-                     "backward Euler dissipates more than Newmark");
+  const Energies trapezoidal =
+    check_run("implicit Newmark", "trapezoidal", "trapezoidal");
+  const Energies euler = check_run("implicit backward Euler", "euler");
+  bfemp_tests::check(std::abs(newmark.E0 - euler.E0) <= 1e-12 * newmark.E0 &&
+                       std::abs(trapezoidal.E0 - euler.E0) <=
+                         1e-12 * newmark.E0,
+                     "all runs start with the same energy");
+  // The contact impulse at the step's end dissipates like backward Euler's
+  // at contact only; the elastic forces keep Newmark's trapezoidal rule.
+  bfemp_tests::check(euler.E_end < newmark.E_end &&
+                       newmark.E_end < trapezoidal.E_end,
+                     "backward Euler dissipates more than Newmark with the "
+                     "contact impulse at the step's end, which dissipates "
+                     "more than Newmark with the trapezoidal one");
 }

@@ -156,6 +156,13 @@ namespace bfemp
     void
     constrain(const double dt, const double end_time);
 
+    /** The contact terms' weight relative to the elastic ones'. */
+    double
+    contact_factor() const
+    {
+      return scheme.contact_weight() / scheme.potential_weight();
+    }
+
     /** a^n = -M^-1 grad Psi(x^n) + g (Newmark's start acceleration). */
     Vector<double>
     start_acceleration() const;

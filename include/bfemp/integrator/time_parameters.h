@@ -66,12 +66,31 @@ namespace bfemp
       double alpha = 1.;
       double beta  = 0.5;
       double gamma = 1.;
+      /**
+       * Whether the contact terms (barrier, lagged friction) act at the
+       * step's end only, with impulse dt f(x^{n+1}) as in backward Euler,
+       * instead of entering Newmark's trapezoidal average of a^n and
+       * a^{n+1}. Identical for backward Euler (gamma = 1).
+       */
+      bool contact_at_step_end = true;
 
       /** 2 alpha beta, the weight of dt^2 Psi in eq. 22. */
       double
       potential_weight() const
       {
         return 2. * alpha * beta;
+      }
+
+      /**
+       * The weight of dt^2 (B + D) in eq. 22. A term that enters only
+       * a^{n+1} changes v by gamma dt a^{n+1}, so the full impulse dt f
+       * needs a^{n+1} = f / (gamma m), i.e. the weight 2 alpha beta / gamma.
+       */
+      double
+      contact_weight() const
+      {
+        return contact_at_step_end ? potential_weight() / gamma
+                                   : potential_weight();
       }
     };
 
@@ -96,6 +115,8 @@ namespace bfemp
     implicit_scheme() const;
 
     Integrator integrator = Integrator::explicit_usl;
+    /** ImplicitScheme::contact_at_step_end of Newmark steps. */
+    bool newmark_contact_at_step_end = true;
     /** Fixed dt, or dt = CFL number * dx / (c_p + max |v_p|). */
     bool        adaptive           = false;
     double      time_step          = 1e-4;
