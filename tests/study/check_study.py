@@ -10,7 +10,8 @@
 2. Run again, it runs nothing and reports the same table.
 3. Bad study files are refused with exit 1 and a message naming the key:
    an unknown prm entry (refused by bfemp --validate), an empty sweep, a
-   missing reference, an unknown error quantity.
+   missing reference, an unknown error quantity, a missing script.
+   A measuring script's number (quantity = "script") is read.
 Prints the measured numbers; exits non-zero on the first failed check.
 """
 import csv
@@ -71,6 +72,31 @@ def main():
 
         base = os.path.join(os.path.dirname(os.path.abspath(study)),
                             "bar_base.prm")
+        # quantity = "script": a measuring script of the user's, here the
+        # time of the last diagnostics row, which must be the end time.
+        script = os.path.join(scratch, "last_time.py")
+        with open(script, "w") as f:
+            f.write("import csv, os, sys\n"
+                    "rows = list(csv.DictReader(open(os.path.join("
+                    "sys.argv[1], 'diagnostics.csv'))))\n"
+                    "print(rows[-1]['time'])\n")
+        scripted = os.path.join(scratch, "scripted.toml")
+        with open(scripted, "w") as f:
+            f.write(f'name = "scripted"\nbase = "{base}"\n[sweep]\n'
+                    '"grid/cell size" = [0.125]\n[error]\n'
+                    f'quantity = "script"\nscript = "{script}"\n'
+                    'exact = "0.145465"\n')
+        done = subprocess.run(
+            ["/usr/bin/python3", tool, scripted, "--bfemp", bfemp,
+             "--output", os.path.join(scratch, "scripted"), "--quiet"],
+            capture_output=True, text=True)
+        with open(os.path.join(scratch, "scripted", "results.csv")) as f:
+            row = next(csv.DictReader(f))
+        print(f"script quantity: {row['quantity']}, error {row['error']}")
+        check(done.returncode == 0 and float(row["error"]) < 1e-9,
+              "quantity 'script' reads the number a script prints "
+              "(the end time, 0.145465 s)")
+
         head = f'name = "bad"\nbase = "{base}"\n'
         error = ('[error]\nquantity = "period"\nsignal = "kinetic_energy"\n'
                  'exact = "1"\n')
@@ -86,6 +112,10 @@ def main():
             "unknown quantity": (
                 head + '[sweep]\n"grid/cell size" = [0.125]\n[error]\n'
                 'quantity = "speed"\n', "'error.quantity' = 'speed'"),
+            "missing script": (
+                head + '[sweep]\n"grid/cell size" = [0.125]\n[error]\n'
+                'quantity = "script"\nscript = "no_such_measure.py"\n'
+                'exact = "1"\n', "'error.script': no such file"),
         }
         for what, (text, fragment) in bad.items():
             path = os.path.join(scratch, what.replace(" ", "_") + ".toml")
