@@ -25,6 +25,10 @@ if [ "${#missing[@]}" -gt 0 ]; then
 fi
 
 jobs="$(nproc)"
+# The test categories (folders of tests/) of tests/debug_tests.txt, the unit
+# tests that ./setup.sh test also runs in Debug.
+debug_categories="$(grep -v '^#' tests/debug_tests.txt | cut -d/ -f1 | sort -u |
+  paste -sd ';')"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 ||
   { cat build.log; exit 1; }
 cmake --build build -j "$jobs" ||
@@ -37,9 +41,24 @@ case "$mode" in
     echo "setup: open output/default/particles.pvd in ParaView"
     ;;
   test)
-    cd build
     # "validation" holds the long runs; see doc/validation.md for them.
-    ctest -j "$jobs" -LE validation --output-on-failure
+    status=0
+    (cd build && ctest -j "$jobs" -LE validation --output-on-failure) ||
+      status=1
+    # The unit tests of tests/debug_tests.txt again against a Debug build
+    # (build-debug/: bfemp's Asserts and deal.II's debug checks run). The
+    # scenes would take hours without optimization.
+    cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug \
+      "-DBFEMP_TEST_CATEGORIES=$debug_categories" > build-debug.log 2>&1 ||
+      { cat build-debug.log; exit 1; }
+    rm -f build-debug.log
+    cmake --build build-debug --target bfemp_lib -j "$jobs" ||
+      { echo "setup: Debug build failed"; exit 1; }
+    debug_tests="$(grep -v '^#' tests/debug_tests.txt |
+      sed 's|^|^|; s|$|\\.debug$|' | paste -sd '|')"
+    (cd build-debug && ctest -j "$jobs" -R "$debug_tests" --output-on-failure) ||
+      status=1
+    exit "$status"
     ;;
   build) ;;
   *) echo "usage: ./setup.sh [run|test|build]"; exit 2 ;;
