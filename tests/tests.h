@@ -13,6 +13,9 @@
 #include <fstream>
 #include <iomanip>
 #include <random>
+#include <string>
+
+#include "format.h"
 
 namespace bfemp_tests
 {
@@ -109,6 +112,25 @@ namespace bfemp_tests
         std::cerr << "check failed: " << what << std::endl;
         std::exit(1);
       }
+  }
+
+  /** "3.1e-09 (bound 1e-06)": a measured value at two significant digits
+   *  and the bound a check compares it with, for the line that records the
+   *  check. */
+  inline std::string
+  measured(const double value, const double bound)
+  {
+    return format("%.1e", value) + " (bound " + format("%g", bound) + ")";
+  }
+
+  /** The check "@p value <= @p bound" (a NaN fails), recorded as
+   *  "what 3.1e-09 (bound 1e-06)": the output holds the measured value, so
+   *  a drift within the bound shows in the comparison with the .output
+   *  file. */
+  inline void
+  check_below(const double value, const double bound, const std::string &what)
+  {
+    check(value <= bound, what + " " + measured(value, bound));
   }
 } // namespace bfemp_tests
 

@@ -17,10 +17,33 @@ using namespace bfemp;
 
 namespace
 {
-  bool
-  near(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+  /** |a - b| / (1 + |b|), checked against 1e-13 by check_near(). */
+  double
+  deviation(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
   {
-    return (a - b).norm() < 1e-13 * (1. + b.norm());
+    return (a - b).norm() / (1. + b.norm());
+  }
+
+  void
+  check_near(const Tensor<1, 2> &a,
+             const Tensor<1, 2> &b,
+             const std::string  &what)
+  {
+    bfemp_tests::check_below(deviation(a, b),
+                             1e-13,
+                             what +
+                               ": |computed - expected| / (1 + |expected|)");
+  }
+
+  /** A value's distance from the expected one, checked against 1e-14. */
+  void
+  check_value(const double       value,
+              const double       expected,
+              const std::string &what)
+  {
+    bfemp_tests::check_below(std::abs(value - expected),
+                             1e-14,
+                             what + ": error");
   }
 
   Tensor<1, 2>
@@ -50,29 +73,29 @@ namespace
   {
     using Type             = BoundaryCondition::Type;
     const Tensor<1, 2> v_o = vec(0.5, -0.25); // the obstacle moves
-    bfemp_tests::check(near(applied(Type::sticky, 0, vec(3, -2), v_o), v_o),
-                       "sticky: the node moves with the obstacle");
-    bfemp_tests::check(near(applied(Type::slip, 0, vec(3, -2), v_o),
-                            vec(3, -0.25)),
-                       "slip: approaching normal velocity removed");
-    bfemp_tests::check(near(applied(Type::slip, 0, vec(3, 2), v_o),
-                            vec(3, -0.25)),
-                       "slip: separating normal velocity removed too");
-    bfemp_tests::check(near(applied(Type::separable_slip, 0, vec(3, 2), v_o),
-                            vec(3, 2)),
-                       "separable slip: a separating node is free");
-    bfemp_tests::check(near(applied(Type::separable_slip, 0, vec(3, -2), v_o),
-                            vec(3, -0.25)),
-                       "separable slip: an approaching node slides");
+    check_near(applied(Type::sticky, 0, vec(3, -2), v_o),
+               v_o,
+               "sticky: the node moves with the obstacle");
+    check_near(applied(Type::slip, 0, vec(3, -2), v_o),
+               vec(3, -0.25),
+               "slip: approaching normal velocity removed");
+    check_near(applied(Type::slip, 0, vec(3, 2), v_o),
+               vec(3, -0.25),
+               "slip: separating normal velocity removed too");
+    check_near(applied(Type::separable_slip, 0, vec(3, 2), v_o),
+               vec(3, 2),
+               "separable slip: a separating node is free");
+    check_near(applied(Type::separable_slip, 0, vec(3, -2), v_o),
+               vec(3, -0.25),
+               "separable slip: an approaching node slides");
     // Relative velocity (2.5, -1.75): friction 0.4 takes 0.4 * 1.75 = 0.7
     // off the tangential 2.5.
-    bfemp_tests::check(
-      near(applied(Type::separable_slip, 0.4, vec(3, -2), v_o),
-           vec(0.5 + 1.8, -0.25)),
-      "Coulomb friction reduces the sliding speed by mu |v_n|");
-    bfemp_tests::check(near(applied(Type::separable_slip, 2., vec(3, -2), v_o),
-                            v_o),
-                       "Coulomb friction stops a node that slides too slowly");
+    check_near(applied(Type::separable_slip, 0.4, vec(3, -2), v_o),
+               vec(0.5 + 1.8, -0.25),
+               "Coulomb friction reduces the sliding speed by mu |v_n|");
+    check_near(applied(Type::separable_slip, 2., vec(3, -2), v_o),
+               v_o,
+               "Coulomb friction stops a node that slides too slowly");
   }
 
   LevelSet<2>
@@ -94,55 +117,68 @@ namespace
                                          {"point", "0, 0.1"},
                                          {"normal", "0, 2"},
                                          {"velocity", "0, 1"}});
-    bfemp_tests::check(std::abs(plane.value(Point<2>(0.3, 0.5), 0.) - 0.4) <
-                         1e-14,
-                       "half-plane: value is the signed distance");
-    bfemp_tests::check(std::abs(plane.value(Point<2>(0.3, 0.5), 0.2) - 0.2) <
-                         1e-14,
-                       "half-plane: the plane moves with its velocity");
-    bfemp_tests::check(near(plane.normal(Point<2>(0.3, 0.5), 0.), vec(0, 1)),
-                       "half-plane: unit outward normal");
+    check_value(plane.value(Point<2>(0.3, 0.5), 0.),
+                0.4,
+                "half-plane: value is the signed distance");
+    check_value(plane.value(Point<2>(0.3, 0.5), 0.2),
+                0.2,
+                "half-plane: the plane moves with its velocity");
+    check_near(plane.normal(Point<2>(0.3, 0.5), 0.),
+               vec(0, 1),
+               "half-plane: unit outward normal");
 
     const LevelSet<2> box = level_set(
       {{"type", "box"}, {"lower corner", "0, 0"}, {"upper corner", "1, 1"}});
-    bfemp_tests::check(std::abs(box.value(Point<2>(1.3, 1.4), 0.) - 0.5) <
-                         1e-14,
-                       "box: distance from outside a corner");
-    bfemp_tests::check(std::abs(box.value(Point<2>(0.9, 0.5), 0.) + 0.1) <
-                         1e-14,
-                       "box: negative distance to the nearest face inside");
-    bfemp_tests::check(near(box.normal(Point<2>(0.9, 0.5), 0.), vec(1, 0)),
-                       "box: normal through the nearest face inside");
-    bfemp_tests::check(near(box.normal(Point<2>(1.3, 1.4), 0.), vec(0.6, 0.8)),
-                       "box: normal away from the corner outside");
+    check_value(box.value(Point<2>(1.3, 1.4), 0.),
+                0.5,
+                "box: distance from outside a corner");
+    check_value(box.value(Point<2>(0.9, 0.5), 0.),
+                -0.1,
+                "box: negative distance to the nearest face inside");
+    check_near(box.normal(Point<2>(0.9, 0.5), 0.),
+               vec(1, 0),
+               "box: normal through the nearest face inside");
+    check_near(box.normal(Point<2>(1.3, 1.4), 0.),
+               vec(0.6, 0.8),
+               "box: normal away from the corner outside");
 
     for (const std::string side : {"below", "above"})
       {
-        const LevelSet<2> wave = level_set({{"type", "sine wave"},
-                                            {"amplitude", "0.025"},
-                                            {"wavelength", "0.1"},
-                                            {"offset", "0.2"},
-                                            {"solid side", side}});
-        const double      k    = 2. * numbers::PI / 0.1;
-        bool              ok   = true;
-        for (double x = 0.; x < 0.2; x += 0.013)
+        const LevelSet<2> wave      = level_set({{"type", "sine wave"},
+                                                 {"amplitude", "0.025"},
+                                                 {"wavelength", "0.1"},
+                                                 {"offset", "0.2"},
+                                                 {"solid side", side}});
+        const double      k         = 2. * numbers::PI / 0.1;
+        double            max_value = 0., max_length = 0., max_tangential = 0.;
+        unsigned int      n_samples = 0, n_wrong_side = 0;
+        for (double x = 0.; x < 0.2; x += 0.013, ++n_samples)
           {
             const double       y = 0.025 * std::cos(k * x) + 0.2;
             const Point<2>     on(x, y);
             const auto         n       = wave.normal(on, 0.);
             const Tensor<1, 2> tangent = vec(1., -0.025 * k * std::sin(k * x));
             const double       sign    = side == "below" ? 1. : -1.;
-            ok = ok && std::abs(wave.value(on, 0.)) < 1e-14 &&
-                 std::abs(n.norm() - 1.) < 1e-14 &&
-                 std::abs(n * tangent) < 1e-13 &&
-                 sign * wave.value(Point<2>(x, y + 0.01), 0.) > 0. &&
-                 sign * wave.value(Point<2>(x, y - 0.01), 0.) < 0. &&
-                 sign * n[1] > 0.;
+            max_value      = std::max(max_value, std::abs(wave.value(on, 0.)));
+            max_length     = std::max(max_length, std::abs(n.norm() - 1.));
+            max_tangential = std::max(max_tangential, std::abs(n * tangent));
+            n_wrong_side +=
+              !(sign * wave.value(Point<2>(x, y + 0.01), 0.) > 0. &&
+                sign * wave.value(Point<2>(x, y - 0.01), 0.) < 0. &&
+                sign * n[1] > 0.);
           }
-        bfemp_tests::check(ok,
-                           "sine wave (solid " + side +
-                             "): zero on the curve, unit normal "
-                             "perpendicular to it and out of the solid");
+        bfemp_tests::check(
+          max_value < 1e-14 && max_length < 1e-14 && max_tangential < 1e-13 &&
+            n_wrong_side == 0,
+          "sine wave (solid " + side +
+            "): zero on the curve, unit normal "
+            "perpendicular to it and out of the solid: "
+            "largest |phi| " +
+            bfemp_tests::measured(max_value, 1e-14) + ", ||n| - 1| " +
+            bfemp_tests::measured(max_length, 1e-14) + ", |n . t| " +
+            bfemp_tests::measured(max_tangential, 1e-13) +
+            ", wrong sign or side at " + std::to_string(n_wrong_side) + " of " +
+            std::to_string(n_samples) + " points");
       }
   }
 
@@ -162,18 +198,26 @@ namespace
     const auto     height = [&](const double t) {
       return -plane.value(x, t); // the plane's height above x
     };
-    bfemp_tests::check(std::abs(height(0.05) - 0.5) < 1e-14 &&
-                         plane.velocity(0.05).norm() == 0.,
-                       "keyframes: at rest before the first keyframe");
-    bfemp_tests::check(std::abs(height(0.3) - 0.3) < 1e-14 &&
-                         near(plane.velocity(0.3), vec(0, -1)),
-                       "keyframes: moves down with the first velocity");
-    bfemp_tests::check(std::abs(height(0.7) - 0.2) < 1e-14 &&
-                         near(plane.velocity(0.7), vec(-1, 0)),
-                       "keyframes: sideways motion keeps the height");
-    bfemp_tests::check(std::abs(height(1.2) - 0.5) < 1e-14 &&
-                         near(plane.velocity(1.2), vec(0, 1)),
-                       "keyframes: the last velocity holds after its time");
+    // The height against the expected one (to 1e-14) and the velocity
+    // against the keyframe's (to 1e-13 (1 + |v|), exactly zero at rest).
+    const auto check_motion = [&](const double        t,
+                                  const double        expected_height,
+                                  const Tensor<1, 2> &expected_velocity,
+                                  const std::string  &what) {
+      const double height_error = std::abs(height(t) - expected_height);
+      const double velocity_error =
+        deviation(plane.velocity(t), expected_velocity);
+      const double velocity_bound = expected_velocity.norm() == 0. ? 0. : 1e-13;
+      bfemp_tests::check(
+        height_error < 1e-14 && velocity_error <= velocity_bound,
+        "keyframes: " + what + ": height error " +
+          bfemp_tests::measured(height_error, 1e-14) + ", velocity error " +
+          bfemp_tests::measured(velocity_error, velocity_bound));
+    };
+    check_motion(0.05, 0.5, vec(0, 0), "at rest before the first keyframe");
+    check_motion(0.3, 0.3, vec(0, -1), "moves down with the first velocity");
+    check_motion(0.7, 0.2, vec(-1, 0), "sideways motion keeps the height");
+    check_motion(1.2, 0.5, vec(0, 1), "the last velocity holds after its time");
 
     const LevelSet<2> wave =
       level_set({{"type", "sine wave"},
@@ -183,9 +227,9 @@ namespace
     // the curve at x0 is now on it at x0 - 0.025.
     const double x0 = 0.013;
     const double y0 = 0.025 * std::cos(2. * numbers::PI * x0 / 0.1) + 0.2;
-    bfemp_tests::check(std::abs(wave.value(Point<2>(x0 - 0.025, y0 - 0.1),
-                                           0.125)) < 1e-14,
-                       "keyframes: a sine wave translates along the path");
+    check_value(wave.value(Point<2>(x0 - 0.025, y0 - 0.1), 0.125),
+                0.,
+                "keyframes: a sine wave translates along the path");
 
     for (const auto &[entries, what] :
          std::vector<std::pair<std::vector<std::pair<std::string, std::string>>,

@@ -117,11 +117,17 @@ main()
                 closest / 2e-3);
   bfemp_tests::check(max_of(c[3]) == 0. && closest > 0., line);
   bfemp_tests::check(max_of(c[5]) > 100.,
-                     "the cube's bottom layer is in contact");
+                     "the cube's bottom layer is in contact: at most " +
+                       bfemp_tests::format("%.0f", max_of(c[5])) +
+                       " particles in contact (more than 100 required)");
   const double force_error = std::abs(-c[2].back() / (m * g) - 1.);
   std::cout << "normal force / m g - 1 = " << -c[2].back() / (m * g) - 1.
             << ", momentum_y = " << c[1].back() << std::endl;
-  bfemp_tests::check(force_error < 1e-4, "at rest: normal force = m g to 1e-4");
-  bfemp_tests::check(std::abs(c[1].back()) < 1e-4 * m * g * 5e-3,
-                     "at rest: |momentum| < 1e-4 m g dt");
+  bfemp_tests::check(force_error < 1e-4,
+                     "at rest: normal force = m g to 1e-4: |F / (m g) - 1| " +
+                       bfemp_tests::measured(force_error, 1e-4));
+  bfemp_tests::check(
+    std::abs(c[1].back()) < 1e-4 * m * g * 5e-3,
+    "at rest: |momentum| < 1e-4 m g dt: |p_y| / (m g dt) " +
+      bfemp_tests::measured(std::abs(c[1].back()) / (m * g * 5e-3), 1e-4));
 }

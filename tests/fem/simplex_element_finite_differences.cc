@@ -229,19 +229,31 @@ namespace
 
     const std::string what =
       std::to_string(dim) + "D " + material->name() + ": ";
-    bfemp_tests::check(max_identity_error < 1e-12, what + "F = I at rest");
-    bfemp_tests::check(max_gradient_error < 1e-6,
-                       what + "gradient matches FD of energy to 1e-6");
-    bfemp_tests::check(max_hessian_error < 1e-6,
-                       what + "Hessian matches FD of gradient to 1e-6");
-    bfemp_tests::check(max_node_sum < 1e-12,
-                       what + "gradient sums to zero over nodes");
+    bfemp_tests::check_below(max_identity_error,
+                             1e-12,
+                             what + "F = I at rest: largest |F - I|");
+    bfemp_tests::check_below(max_gradient_error,
+                             1e-6,
+                             what + "gradient matches FD of energy: largest "
+                                    "relative error");
+    bfemp_tests::check_below(max_hessian_error,
+                             1e-6,
+                             what + "Hessian matches FD of gradient: largest "
+                                    "relative error");
+    bfemp_tests::check_below(max_node_sum,
+                             1e-12,
+                             what + "gradient sums to zero over nodes: "
+                                    "largest |sum| / |gradient|");
     if (rotation_invariant)
       {
-        bfemp_tests::check(max_rigid_energy < 1e-10,
-                           what + "rigid motion has zero energy");
-        bfemp_tests::check(max_rigid_gradient < 1e-10,
-                           what + "rigid motion has zero gradient");
+        bfemp_tests::check_below(max_rigid_energy,
+                                 1e-10,
+                                 what + "rigid motion has zero energy: "
+                                        "largest |E| / (mu V_e)");
+        bfemp_tests::check_below(max_rigid_gradient,
+                                 1e-10,
+                                 what + "rigid motion has zero gradient: "
+                                        "largest |dE| size / (mu V_e)");
       }
   }
 
@@ -262,6 +274,15 @@ namespace
     return false;
   }
 
+  /** det B_e / dim!, the signed rest volume the constructor refuses when it
+   *  is not positive. */
+  template <int dim>
+  double
+  signed_volume(const Nodes<dim> &X)
+  {
+    return determinant(edge_basis<dim>(X)) / (dim == 2 ? 2. : 6.);
+  }
+
   template <int dim>
   void
   check_rejection()
@@ -272,14 +293,20 @@ namespace
       for (unsigned int d = 0; d < dim; ++d)
         degenerate[a][d] = a;
     bfemp_tests::check(is_rejected<dim>(degenerate),
-                       std::to_string(dim) + "D degenerate element rejected");
+                       std::to_string(dim) +
+                         "D degenerate element rejected: signed rest volume " +
+                         bfemp_tests::format("%.1e",
+                                             signed_volume<dim>(degenerate)));
 
     Nodes<dim> inverted;
     for (unsigned int a = 1; a < dim + 1; ++a)
       inverted[a][a - 1] = 1.;
     std::swap(inverted[1], inverted[2]);
     bfemp_tests::check(is_rejected<dim>(inverted),
-                       std::to_string(dim) + "D inverted element rejected");
+                       std::to_string(dim) +
+                         "D inverted element rejected: signed rest volume " +
+                         bfemp_tests::format("%.1e",
+                                             signed_volume<dim>(inverted)));
   }
 
   template <int dim>

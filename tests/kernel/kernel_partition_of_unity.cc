@@ -86,16 +86,27 @@ namespace
 
     const std::string name =
       std::to_string(dim) + "D degree " + std::to_string(degree) + ": ";
-    bfemp_tests::check(max_reference < 1e-14,
-                       name + "w_ip = prod_d N(xi_d - i_d) at the reported "
-                              "nodes");
-    bfemp_tests::check(min_w >= 0., name + "w_ip >= 0");
-    bfemp_tests::check(max_sum_w < 1e-12, name + "sum_i w_ip = 1");
-    bfemp_tests::check(max_position < 1e-12,
-                       name + "sum_i w_ip x_i = x_p (and r = x_i - x_p)");
-    bfemp_tests::check(max_sum_grad < 1e-12, name + "sum_i grad w_ip = 0");
-    bfemp_tests::check(max_identity < 1e-12,
-                       name + "sum_i x_i (grad w_ip)^T = I");
+    bfemp_tests::check_below(max_reference,
+                             1e-14,
+                             name + "w_ip = prod_d N(xi_d - i_d) at the "
+                                    "reported nodes: largest difference");
+    bfemp_tests::check(min_w >= 0.,
+                       name + "w_ip >= 0: smallest w_ip " +
+                         bfemp_tests::format("%.1e", min_w));
+    bfemp_tests::check_below(max_sum_w,
+                             1e-12,
+                             name + "sum_i w_ip = 1: largest |sum - 1|");
+    bfemp_tests::check_below(max_position,
+                             1e-12,
+                             name + "sum_i w_ip x_i = x_p (and r = x_i - x_p): "
+                                    "largest distance");
+    bfemp_tests::check_below(max_sum_grad,
+                             1e-12,
+                             name + "sum_i grad w_ip = 0: largest |sum| dx");
+    bfemp_tests::check_below(max_identity,
+                             1e-12,
+                             name + "sum_i x_i (grad w_ip)^T = I: largest "
+                                    "|sum - I|");
   }
 } // namespace
 

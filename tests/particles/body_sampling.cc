@@ -10,6 +10,7 @@
 
 #include <deal.II/base/numbers.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -81,14 +82,18 @@ namespace
                    exact) /
           exact;
       }
-    std::cout << dim << "D " << name << ": volume errors " << errors[0]
-              << " (32 cells), " << errors[1] << " (128 cells)" << std::endl;
     // Sampling is first order in the sub-cell size at curved or unaligned
     // surfaces (at most about dim * sub-cell / size = 2e-2 here): a 4x finer
     // grid must at least halve the error.
     bfemp_tests::check(errors[1] < 0.5 * errors[0] && errors[1] < 3e-2,
                        std::to_string(dim) + "D " + name +
-                         ": sampled volume converges to the exact one");
+                         ": sampled volume converges to the exact one: "
+                         "relative error " +
+                         bfemp_tests::format("%.1e", errors[0]) +
+                         " on 32 cells, " +
+                         bfemp_tests::measured(errors[1], 3e-2) +
+                         " on 128 cells, ratio " +
+                         bfemp_tests::measured(errors[1] / errors[0], 0.5));
   }
 
   template <int dim>
@@ -122,9 +127,15 @@ namespace
                                   primitive<dim>(Type::ball, 0, inner, true)}),
                        grid)
         .sample();
+    unsigned int n_differing = 0;
+    for (unsigned int i = 0; i < std::min(shell.size(), difference.size()); ++i)
+      n_differing += (shell[i] != difference[i]);
     bfemp_tests::check(shell == difference,
                        std::to_string(dim) +
-                         "D ball minus ball samples exactly like the shell");
+                         "D ball minus ball samples exactly like the shell: " +
+                         std::to_string(difference.size()) + " particles (" +
+                         std::to_string(shell.size()) + " in the shell), " +
+                         std::to_string(n_differing) + " at other positions");
 
     // A union of overlapping boxes: no sample twice, and the count is the
     // union's volume / V_p exactly (boxes aligned with sub-cells).
@@ -145,10 +156,18 @@ namespace
       std::pow(0.35, dim) + std::pow(0.3, dim) - std::pow(0.15, dim);
     const double sub_volume = std::pow(1. / 80., dim);
     bfemp_tests::check(distinct.size() == union_samples.size(),
-                       std::to_string(dim) + "D union has no duplicates");
+                       std::to_string(dim) + "D union has no duplicates: " +
+                         std::to_string(union_samples.size() -
+                                        distinct.size()) +
+                         " duplicates among " +
+                         std::to_string(union_samples.size()) + " particles");
     bfemp_tests::check(
       std::abs(union_samples.size() * sub_volume - union_volume) < 1e-9,
-      std::to_string(dim) + "D union count = union volume / V_p");
+      std::to_string(dim) + "D union count = union volume / V_p: " +
+        std::to_string(union_samples.size()) + " particles, |N V_p - V| " +
+        bfemp_tests::measured(std::abs(union_samples.size() * sub_volume -
+                                       union_volume),
+                              1e-9));
 
     // Jittered: one particle per sub-cell of an aligned box, inside it.
     const Lattice<dim> jitter_grid = lattice<dim>(40);
@@ -170,9 +189,19 @@ namespace
         subcells.insert(index);
       }
     one_per_subcell = one_per_subcell && subcells.size() == jittered.size();
-    bfemp_tests::check(one_per_subcell && jittered != regular,
-                       std::to_string(dim) +
-                         "D jittered sampling: one random point per sub-cell");
+    unsigned int n_moved = 0;
+    for (unsigned int i = 0; i < std::min(regular.size(), jittered.size()); ++i)
+      n_moved += (jittered[i] != regular[i]);
+    bfemp_tests::check(
+      one_per_subcell && jittered != regular,
+      std::to_string(dim) +
+        "D jittered sampling: one random point per sub-cell: " +
+        std::to_string(jittered.size()) + " particles (" +
+        std::to_string(regular.size()) + " regular) in " +
+        std::to_string(subcells.size()) + " sub-cells, " +
+        std::to_string(n_moved) +
+        " moved off the regular "
+        "points");
   }
 } // namespace
 

@@ -87,23 +87,34 @@ main(int argc, char **argv)
   for (const char *part : {"residual", "energy", "maximum Newton iterations"})
     bfemp_tests::check(message.find(part) != std::string::npos,
                        std::string("the message names the ") + part);
-  bfemp_tests::check(failed_step >= 1, "the failed step is named");
+  bfemp_tests::check(failed_step >= 1,
+                     "the failed step is named: step " +
+                       std::to_string(failed_step));
   bfemp_tests::check(failed_step >= 2,
                      "steps before the failed one converged (their output is "
-                     "what the remaining checks inspect)");
+                     "what the remaining checks inspect): " +
+                       std::to_string(failed_step - 1) + " steps");
 
   const std::string folder = "results/newton_failure";
   const auto steps = bfemp_tests::read_columns(folder + "/diagnostics.csv",
                                                {"step", "newton_iterations"});
   bfemp_tests::check(!steps[0].empty() && steps[0].back() < failed_step,
-                     "diagnostics.csv ends before the failed step");
-  bool converged = true;
+                     "diagnostics.csv ends before the failed step: last row "
+                     "step " +
+                       (steps[0].empty()
+                          ? std::string("none")
+                          : bfemp_tests::format("%.0f", steps[0].back())));
+  unsigned int n_unsolved = 0;
   for (unsigned int r = 1; r < steps[1].size(); ++r)
-    converged = converged && steps[1][r] >= 1;
-  bfemp_tests::check(converged, "every written row comes from solved steps");
+    n_unsolved += !(steps[1][r] >= 1);
+  bfemp_tests::check(n_unsolved == 0,
+                     "every written row comes from solved steps: " +
+                       std::to_string(n_unsolved) +
+                       " rows after the first without Newton iterations, of " +
+                       std::to_string(steps[1].size()));
 
-  unsigned int n_listed     = 0;
-  bool         all_complete = true;
+  unsigned int n_listed   = 0;
+  unsigned int n_complete = 0;
   for (const char *series : {"particles.pvd", "fem_body_0.pvd"})
     {
       const std::string pvd = read_file(folder + "/" + series);
@@ -116,16 +127,18 @@ main(int argc, char **argv)
            ++it, ++n_listed)
         {
           const std::string vtu = read_file(folder + "/" + (*it)[1].str());
-          all_complete =
-            all_complete && vtu.find("</VTKFile>") != std::string::npos;
+          n_complete += vtu.find("</VTKFile>") != std::string::npos;
         }
     }
-  bfemp_tests::check(n_listed >= 2 && all_complete,
-                     "every VTU file the series list is complete");
-  bool no_temporary_file = true;
+  bfemp_tests::check(n_listed >= 2 && n_complete == n_listed,
+                     "every VTU file the series list is complete: " +
+                       std::to_string(n_complete) + " of " +
+                       std::to_string(n_listed));
+  unsigned int n_temporary = 0;
   for (const auto &entry : std::filesystem::directory_iterator(folder))
-    no_temporary_file =
-      no_temporary_file && entry.path().extension() != ".part";
-  bfemp_tests::check(no_temporary_file, "no temporary file is left");
+    n_temporary += entry.path().extension() == ".part";
+  bfemp_tests::check(n_temporary == 0,
+                     "no temporary file is left: " +
+                       std::to_string(n_temporary) + " .part files");
   deallog << "OK" << std::endl;
 }

@@ -70,9 +70,14 @@ namespace
              const double                  tolerance = 1e-12)
   {
     const double t = smallest_positive_root(c, degree);
-    bfemp_tests::check(relative_error(t, expected) <= tolerance,
-                       name + (std::isinf(expected) ? ": no positive root"
-                                                    : ": root found"));
+    if (std::isinf(expected))
+      bfemp_tests::check(relative_error(t, expected) <= tolerance,
+                         name + ": no positive root: t* = " +
+                           bfemp_tests::format("%.1e", t));
+    else
+      bfemp_tests::check_below(relative_error(t, expected),
+                               tolerance,
+                               name + ": root found: relative error");
   }
 
   /** sum |c_i| t^i, the scale of rounding errors of p(t). */
@@ -94,13 +99,16 @@ namespace
                  const unsigned int            degree)
   {
     const double t = smallest_positive_root(c, degree);
-    bfemp_tests::check(std::isfinite(t) && t > 0. &&
-                         std::abs(evaluate_polynomial(c, degree, t)) <=
-                           1e-14 * magnitude(c, degree, t) &&
+    const double residual =
+      std::abs(evaluate_polynomial(c, degree, t)) / magnitude(c, degree, t);
+    bfemp_tests::check(std::isfinite(t) && t > 0. && residual <= 1e-14 &&
                          evaluate_polynomial(c, degree, t * (1. - 1e-9)) *
                              evaluate_polynomial(c, degree, t * (1. + 1e-9)) <
                            0.,
-                       name + ": p(t*) = 0 and p changes sign there");
+                       name + ": p(t*) = 0 and p changes sign there: t* = " +
+                         bfemp_tests::format("%.1e", t) +
+                         ", |p(t*)| / sum_i |c_i| t*^i " +
+                         bfemp_tests::measured(residual, 1e-14));
   }
 
   void
@@ -250,6 +258,7 @@ namespace
   random_polynomials()
   {
     unsigned int n_cases = 0, n_failed = 0;
+    double       worst_simple = 0., worst_double = 0.;
     for (unsigned int k = 0; k < 3000; ++k)
       {
         const unsigned int  degree = 2 + k % 2;
@@ -268,7 +277,10 @@ namespace
         const double t =
           smallest_positive_root(from_roots(scale, roots), degree);
         ++n_cases;
-        if (relative_error(t, expected) > (double_root ? 1e-6 : 1e-10))
+        const double error = relative_error(t, expected);
+        double      &worst = double_root ? worst_double : worst_simple;
+        worst              = std::max(worst, error);
+        if (!(error <= (double_root ? 1e-6 : 1e-10)))
           {
             ++n_failed;
             deallog << "  degree " << degree << " roots";
@@ -279,7 +291,11 @@ namespace
       }
     bfemp_tests::check(n_failed == 0,
                        "random polynomials: smallest positive root of " +
-                         std::to_string(n_cases) + " cases");
+                         std::to_string(n_cases) +
+                         " cases: largest relative error with simple roots " +
+                         bfemp_tests::measured(worst_simple, 1e-10) +
+                         ", with a double root " +
+                         bfemp_tests::measured(worst_double, 1e-6));
   }
 
   template <int dim>
@@ -294,13 +310,18 @@ namespace
    * for t = t* k / 1000, k = 1..999 (or on a log grid of (0, 1e6] when
    * t* = infinity). With @p known_root > 0, B was built so that
    * det(A + known_root B) = 0, and t* <= known_root is also checked.
+   * Returns whether t* > 0, t* <= known_root and the signs hold, and sets
+   * @p residual to |det(A + t* B)| / (|A| + t* |B|)^dim (0 if t* is
+   * infinite), which the caller checks against 1e-12.
    */
   template <int dim>
   bool
   check_bound(const Tensor<2, dim> &A,
               const Tensor<2, dim> &B,
+              double               &residual,
               const double          known_root = 0.)
   {
+    residual            = 0.;
     const double t_star = determinant_step_bound(A, B);
     if (!(t_star > 0.))
       return false;
@@ -309,9 +330,8 @@ namespace
     if (std::isfinite(t_star))
       {
         const double scale = std::pow(norm(A) + t_star * norm(B), dim);
-        if (std::abs(determinant(Tensor<2, dim>(A + t_star * B))) >
-            1e-12 * scale)
-          return false;
+        residual =
+          std::abs(determinant(Tensor<2, dim>(A + t_star * B))) / scale;
         for (unsigned int k = 1; k < 1000; ++k)
           if (!(determinant(Tensor<2, dim>(A + (t_star * k / 1000.) * B)) > 0.))
             return false;
@@ -322,6 +342,39 @@ namespace
           return false;
     return true;
   }
+
+  /** The failures and the largest residual of a group of check_bound()
+   *  calls. */
+  struct BoundCases
+  {
+    unsigned int n_cases = 0, n_failed = 0;
+    double       worst_residual = 0.;
+
+    template <int dim>
+    void
+    add(const Tensor<2, dim> &A,
+        const Tensor<2, dim> &B,
+        const double          known_root = 0.)
+    {
+      double residual = 0.;
+      ++n_cases;
+      n_failed += !check_bound(A, B, residual, known_root);
+      // a NaN sticks (std::max could drop it)
+      if (std::isnan(residual) || residual > worst_residual)
+        worst_residual = residual;
+    }
+
+    void
+    report(const std::string &what) const
+    {
+      bfemp_tests::check(n_failed == 0 && worst_residual <= 1e-12,
+                         what + " (" + std::to_string(n_cases) +
+                           " cases): " + std::to_string(n_failed) +
+                           " failed, largest |det(A + t* B)| / (|A| + t* "
+                           "|B|)^dim " +
+                           bfemp_tests::measured(worst_residual, 1e-12));
+    }
+  };
 
   template <int dim>
   Tensor<2, dim>
@@ -343,7 +396,7 @@ namespace
     const std::string name = std::to_string(dim) + "D determinant bound";
 
     // generic random directions of several sizes, A at several scales
-    unsigned int n_cases = 0, n_failed = 0;
+    BoundCases generic;
     for (const double a_scale : {1e-3, 1., 1e3})
       for (const double b_amplitude : {0.01, 0.3, 1., 10., 1e4})
         for (unsigned int k = 0; k < 100; ++k)
@@ -352,19 +405,16 @@ namespace
               a_scale * random_positive_determinant<dim>(0.5);
             const Tensor<2, dim> B =
               a_scale * random_numbers.tensor<dim>(b_amplitude);
-            ++n_cases;
-            n_failed += !check_bound(A, B);
+            generic.add(A, B);
           }
-    bfemp_tests::check(n_failed == 0,
-                       name + ": random A, B (" + std::to_string(n_cases) +
-                         " cases)");
+    generic.report(name + ": random A, B");
 
     // singular directions (rank one, as from a single moving node, and in
     // 3D rank two): det B and the other vanishing coefficients are rounding
     // noise that must not create roots
     for (unsigned int rank = 1; rank < dim; ++rank)
       {
-        n_cases = n_failed = 0;
+        BoundCases singular;
         for (unsigned int k = 0; k < 500; ++k)
           {
             const Tensor<2, dim> A = random_positive_determinant<dim>(0.5);
@@ -372,17 +422,14 @@ namespace
             for (unsigned int r = 0; r < rank; ++r)
               B += outer_product(random_numbers.vector<dim>(3.),
                                  random_numbers.vector<dim>(1.));
-            ++n_cases;
-            n_failed += !check_bound(A, B);
+            singular.add(A, B);
           }
-        bfemp_tests::check(n_failed == 0,
-                           name + ": rank-" + std::to_string(rank) + " B (" +
-                             std::to_string(n_cases) + " cases)");
+        singular.report(name + ": rank-" + std::to_string(rank) + " B");
       }
 
     // B = (S - A) / t0 with a singular S, so det(A + t0 B) = 0: the bound is
     // at most t0, for t0 from 1e-12 to 1e6
-    n_cases = n_failed = 0;
+    BoundCases through_singular;
     for (const double t0 : {1e-12, 1e-6, 1e-2, 1., 1e6})
       for (unsigned int k = 0; k < 100; ++k)
         {
@@ -392,29 +439,32 @@ namespace
           for (unsigned int i = 0; i < dim; ++i)
             S[i][dim - 1] = 0.3 * S[i][0] - 0.7 * S[i][dim - 2];
           const Tensor<2, dim> B = (S - A) / t0;
-          ++n_cases;
-          n_failed += !check_bound(A, B, t0);
+          through_singular.add(A, B, t0);
         }
-    bfemp_tests::check(n_failed == 0,
-                       name + ": direction through a singular matrix at t0 (" +
-                         std::to_string(n_cases) + " cases)");
+    through_singular.report(name +
+                            ": direction through a singular matrix at t0");
 
     // directions that only shrink or shear (no root): B = -s A has its root at
     // 1/s, and B = 0 has none
-    bool exact = true;
+    double worst_error = 0.;
     for (const double s : {1e-9, 0.5, 2., 1e9})
       {
         const Tensor<2, dim> A = random_positive_determinant<dim>(0.5);
         // a root of multiplicity dim: accurate to about eps^(1/dim)
-        exact = exact && relative_error(determinant_step_bound<dim>(A, -s * A),
-                                        1. / s) <= 1e-4;
+        const double error =
+          relative_error(determinant_step_bound<dim>(A, -s * A), 1. / s);
+        if (std::isnan(error) || error > worst_error)
+          worst_error = error;
       }
     const Tensor<2, dim> A = random_positive_determinant<dim>(0.5);
-    exact =
-      exact && std::isinf(determinant_step_bound<dim>(A, Tensor<2, dim>()));
-    bfemp_tests::check(exact,
+    const double t_none    = determinant_step_bound<dim>(A, Tensor<2, dim>());
+    bfemp_tests::check(worst_error <= 1e-4 && std::isinf(t_none),
                        name + ": B = -s A gives 1/s (a root of multiplicity " +
-                         std::to_string(dim) + "), B = 0 gives none");
+                         std::to_string(dim) +
+                         "), B = 0 gives none: largest relative error " +
+                         bfemp_tests::measured(worst_error, 1e-4) +
+                         ", t* for B = 0: " +
+                         bfemp_tests::format("%.1e", t_none));
   }
 } // namespace
 
