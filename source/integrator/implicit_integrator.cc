@@ -473,8 +473,17 @@ namespace bfemp
     last_contact.friction_updates   = 0;
     last_contact.friction_converged = true;
     double progress                 = 0.;
+    // Passes before the last only give the point at which friction is
+    // lagged next ('contact/friction pass tolerance factor').
+    const double eps_d = newton.tolerance();
+    double       tolerance =
+      with_friction ? contact_parameters.friction_pass_tolerance_factor * eps_d
+                          : eps_d;
     for (unsigned int j = 0;; ++j)
       {
+        // The last pass allowed is the step's answer.
+        if (j == contact_parameters.maximum_friction_iterations)
+          tolerance = eps_d;
         const NewtonStatistics s =
           newton.minimize(potential,
                           u,
@@ -482,7 +491,9 @@ namespace bfemp
                           j == 0
                             ? label
                             : label + ", friction update " + std::to_string(j),
-                          progress);
+                          progress,
+                          tolerance);
+        tolerance = std::max(eps_d, 0.1 * tolerance);
         if (j == 0)
           last_statistics = s;
         else
@@ -491,8 +502,9 @@ namespace bfemp
         if (!with_friction)
           return;
         // Converged friction (Section 5): with (F, lambda, T) at the
-        // current x, the first Newton increment already met eps_d.
-        if (j > 0 && s.iterations == 1)
+        // current x, the first Newton increment already met eps_d (not
+        // only a looser pass tolerance).
+        if (j > 0 && s.iterations == 1 && s.residual < eps_d)
           return;
         if (j == contact_parameters.maximum_friction_iterations)
           {
@@ -502,9 +514,14 @@ namespace bfemp
         const unsigned int lagged_pairs = friction->n_pairs();
         friction->update(u);
         ++last_contact.friction_updates;
-        // No friction before and after: the potential did not change.
+        // No friction before and after: the potential did not change; a
+        // pass stopped at a looser tolerance is finished at eps_d.
         if (lagged_pairs == 0 && friction->n_pairs() == 0)
-          return;
+          {
+            if (s.residual < eps_d)
+              return;
+            tolerance = eps_d;
+          }
       }
   }
 

@@ -274,8 +274,12 @@ namespace bfemp
                               Vector<double>            &u,
                               const double               dt,
                               const std::string         &step_label,
-                              const double               start_progress)
+                              const double               start_progress,
+                              const double               stop_tolerance)
   {
+    // Looser than eps_d for the friction passes before a step's last.
+    const double stop_at =
+      stop_tolerance > 0. ? stop_tolerance : parameters.newton_tolerance;
     NewtonStatistics statistics;
     Timer            timer;
     Vector<double>   gradient, direction(u.size()), trial(u.size());
@@ -385,9 +389,9 @@ namespace bfemp
                    std::to_string(statistics.minimum_distance) +
                    " <= 0 (invariant check)");
           }
-        if (statistics.residual < parameters.newton_tolerance && progress == 1.)
+        if (statistics.residual < stop_at && progress == 1.)
           break;
-        if (step == 0. && !(statistics.residual < parameters.newton_tolerance))
+        if (step == 0. && !(statistics.residual < stop_at))
           fail("the line search found no decrease of the energy");
       }
     statistics.energy = energy;

@@ -31,6 +31,10 @@ namespace bfemp
       friction_coefficients;
     /** Friction updates of Algorithm 1 before the step goes on unconverged. */
     unsigned int maximum_friction_iterations = 20;
+    /** Factor on eps_d at which the first friction pass of a step stops;
+     *  each later pass stops at a tenth of the previous factor, never below
+     *  eps_d. 1 (the default) solves every pass to eps_d. */
+    double friction_pass_tolerance_factor = 1.;
 
     /** mu between MPM body @p mpm_body and FEM body @p fem_body. */
     double

@@ -76,18 +76,27 @@ namespace bfemp
      * targets and obstacles to the ends of their paths as fast as the same
      * det F and collision filter allows (move_constraints()); the Newton
      * iterations run in between, and convergence needs both there.
-     * Throws SimulationError naming @p step_label, the residual and the
-     * energy if it does not converge.
+     * Stops at ||p||_inf / dt < @p stop_tolerance (the Newton tolerance eps_d
+     * where 0). Throws SimulationError naming @p step_label, the residual
+     * and the energy if it does not converge.
      */
     NewtonStatistics
     minimize(IncrementalPotential<dim> &potential,
              Vector<double>            &u,
              const double               dt,
              const std::string         &step_label,
-             const double               start_progress = 0.);
+             const double               start_progress = 0.,
+             const double               stop_tolerance = 0.);
 
     const LinearSolver &
     linear_solver() const;
+
+    /** eps_d, 'solver/Newton tolerance' [m/s]. */
+    double
+    tolerance() const
+    {
+      return parameters.newton_tolerance;
+    }
 
   private:
     /**

@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""Twist slices: the cost of implicit 3D steps of BFEMP Section 6.7 per variant.
+
+Runs the first steps of a twist scene (prm/experiments/6_7_twist/; the
+compression with growing frictional contact) once per variant, each variant
+a few prm entries changed on top of the scene, and records per run the wall
+time, the CPU time, the Newton iterations, the friction updates, the time
+split (assembly, factorization, solve, line search, summed over the steps
+from the diagnostics) and the end state (elastic energy, contact force),
+so that variants can be compared as ratios from the same run and their end
+states checked against the baseline's.
+
+  /usr/bin/python3 benchmarks/twist_slices.py [--scene twist_mu0_2]
+      [--steps 10] [--variants baseline,loose,threads2,cg]
+      [--build build] [--baseline-build OTHER_BUILD] [--output FILE]
+
+--scene is a file name in prm/experiments/6_7_twist/ without .prm
+(twist_mu0_2: the paper's resolution, 110592 particles, about 30 s per step
+on one thread once in contact; twist_medium_mu0_2: 4096 particles, 2-4 s).
+--baseline-build runs the variant "baseline" also with the bfemp of another
+build folder (e.g. a worktree of an earlier commit built the same way) and
+records it as "baseline (other build)". Writes
+benchmarks/results/twist_slices_<scene>.json (see doc/performance.md).
+"""
+
+import argparse
+import csv
+import json
+import os
+import platform
+import resource
+import subprocess
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "prm", "experiments", "6_7_twist")
+
+# name -> {subsection: {entry: value}} on top of the scene. Every variant
+# runs on one thread unless it says otherwise, so that variants compare on
+# a machine with other load too.
+VARIANTS = {
+    "baseline": {"contact": {"friction pass tolerance factor": "1"}},
+    "loose": {"contact": {"friction pass tolerance factor": "100"}},
+    "threads2": {"contact": {"friction pass tolerance factor": "1"},
+                 "run": {"threads": "2"}},
+    "cg": {"contact": {"friction pass tolerance factor": "1"},
+           "solver": {"linear solver": "CG AMG"}},
+}
+TIMES = ["assembly_time", "factorization_time", "solve_time",
+         "line_search_time"]
+
+
+def write_prm(folder, scene, name, steps, changes):
+    run = {"name": name, "end time": f"{steps * 1e-2:.6g}", "quiet": "true",
+           "threads": "1"}
+    run.update(changes.get("run", {}))
+    lines = [f"include {os.path.join(SCENES, scene + '.prm')}"]
+    sections = dict(changes)
+    sections["run"] = run
+    sections["output"] = {"directory": folder, "interval": "100",
+                          "write particles": "false", "write grid": "false"}
+    for section, entries in sections.items():
+        lines.append(f"subsection {section}")
+        lines += [f"  set {key} = {value}" for key, value in entries.items()]
+        lines.append("end")
+    path = os.path.join(folder, name + ".prm")
+    with open(path, "w") as prm:
+        prm.write("\n".join(lines) + "\n")
+    return path
+
+
+def run(binary, folder, scene, name, steps, changes):
+    path = write_prm(folder, scene, name, steps, changes)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run([binary, path], cwd=folder, check=True,
+                   capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(os.path.join(folder, name, "diagnostics.csv")) as f:
+        rows = list(csv.DictReader(f))[1:]  # row 0: the initial state
+    result = {
+        "wall time [s]": wall,
+        "CPU time [s]": (after.ru_utime - before.ru_utime +
+                         after.ru_stime - before.ru_stime),
+        "peak memory [MB]": after.ru_maxrss / 1024.,
+        "steps": len(rows),
+        "Newton iterations": sum(int(r["newton_iterations"]) for r in rows),
+        "friction updates": sum(int(r["friction_updates"]) for r in rows),
+        "particles inside the shell (max)": max(
+            int(float(r["particles_in_fem"])) for r in rows),
+        "Newton iterations per step": [int(r["newton_iterations"])
+                                       for r in rows],
+    }
+    for key in TIMES:
+        result[key.replace("_", " ") + " [s]"] = sum(float(r[key])
+                                                     for r in rows)
+    last = rows[-1]
+    result["end state"] = {
+        key: float(last[key]) for key in
+        ["elastic_energy", "kinetic_energy", "contact_force_m0_f0_x",
+         "contact_force_m0_f0_y", "contact_force_m0_f0_z", "min_J"]}
+    return result
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--scene", default="twist_mu0_2")
+    parser.add_argument("--steps", type=int, default=10)
+    parser.add_argument("--variants", default=",".join(VARIANTS))
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--baseline-build", default=None)
+    parser.add_argument("--output", default=None)
+    args = parser.parse_args()
+    output = args.output or os.path.join(
+        ROOT, "benchmarks", "results", f"twist_slices_{args.scene}.json")
+    names = [v.strip() for v in args.variants.split(",") if v.strip()]
+    unknown = [v for v in names if v not in VARIANTS]
+    if unknown:
+        parser.error(f"unknown variant(s) {', '.join(unknown)}; known: "
+                     f"{', '.join(VARIANTS)}")
+    jobs = [(v, os.path.join(args.build, "bfemp"), v) for v in names]
+    if args.baseline_build:
+        jobs.append(("baseline (other build)",
+                     os.path.join(args.baseline_build, "bfemp"), "baseline"))
+    runs = {}
+    with tempfile.TemporaryDirectory() as folder:
+        for label, binary, variant in jobs:
+            name = label.replace(" ", "_").replace("(", "").replace(")", "")
+            runs[label] = run(binary, folder, args.scene, name, args.steps,
+                              VARIANTS[variant])
+            runs[label]["changes"] = VARIANTS[variant]
+            r = runs[label]
+            print(f"{label}: {r['wall time [s]']:.1f} s wall, "
+                  f"{r['CPU time [s]']:.1f} s CPU, "
+                  f"{r['Newton iterations']} Newton iterations", flush=True)
+    record = {
+        "benchmark": "twist_slices",
+        "scene": os.path.relpath(os.path.join(SCENES, args.scene + ".prm"),
+                                 ROOT),
+        "steps": args.steps,
+        "date": time.strftime("%Y-%m-%d"),
+        "machine": {"processor": platform.processor() or platform.machine(),
+                    "cpus": os.cpu_count(), "system": platform.platform()},
+        "runs": runs,
+    }
+    if "baseline" in runs:
+        base = runs["baseline"]
+        for label, r in runs.items():
+            if label == "baseline":
+                continue
+            r["wall time / baseline"] = (r["wall time [s]"] /
+                                         base["wall time [s]"])
+            r["Newton iterations / baseline"] = (r["Newton iterations"] /
+                                                 base["Newton iterations"])
+            r["end state, largest relative difference to baseline"] = max(
+                abs(r["end state"][k] - base["end state"][k]) /
+                max(abs(base["end state"][k]), 1e-300)
+                for k in base["end state"])
+    os.makedirs(os.path.dirname(output), exist_ok=True)
+    with open(output + ".tmp", "w") as f:
+        json.dump(record, f, indent=1)
+    os.replace(output + ".tmp", output)
+    print("wrote", output)
+
+
+if __name__ == "__main__":
+    main()
