@@ -80,7 +80,7 @@ namespace bfemp
       "gives the point at which friction is lagged next, so it need not be "
       "solved to eps_d; the step still ends when, with the friction "
       "updated, the first Newton increment meets eps_d. 1 solves every pass "
-      "to eps_d (Algorithm 1 as written); 100 saved 10-18 % of the Newton "
+      "to eps_d (Algorithm 1 as written); 100 saved 8-18 % of the Newton "
       "iterations of the twist's compression (doc/experiments/twist.md).");
     prm.leave_subsection();
   }
