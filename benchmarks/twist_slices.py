@@ -11,8 +11,15 @@ so that variants can be compared as ratios from the same run and their end
 states checked against the baseline's.
 
   /usr/bin/python3 benchmarks/twist_slices.py [--scene twist_mu0_2]
-      [--steps 10] [--variants baseline,loose,threads2,cg]
+      [--steps 10] [--start 0] [--variants baseline,loose,threads2,cg]
       [--build build] [--baseline-build OTHER_BUILD] [--output FILE]
+
+--start T (> 0) slices the run at t = T instead of t = 0, for the twist
+phase (T = 1: the shell has pressed 0.5 m and starts to turn). The state at
+T comes from one run of the scene to T (variant "material_loose" on two
+threads; every variant of the slice starts from the same state), whose
+folder with its checkpoint is kept in <build>/twist_slices/ and reused; an
+interrupted run to T continues from its last checkpoint when started again.
 
 --scene is a file name in prm/experiments/6_7_twist/ without .prm
 (twist_mu0_2: the paper's resolution, 110592 particles, about 30 s per step
@@ -29,6 +36,7 @@ import json
 import os
 import platform
 import resource
+import shutil
 import subprocess
 import tempfile
 import time
@@ -38,21 +46,40 @@ SCENES = os.path.join(ROOT, "prm", "experiments", "6_7_twist")
 
 # name -> {subsection: {entry: value}} on top of the scene. Every variant
 # runs on one thread unless it says otherwise, so that variants compare on
-# a machine with other load too.
+# a machine with other load too. "baseline" is the scene with the paper's
+# Newton (Algorithm 1 as written, the increment over the unknowns).
+PAPER = {"Newton increment": "unknowns"}
+MATERIAL = {"Newton increment": "material points"}
 VARIANTS = {
-    "baseline": {"contact": {"friction pass tolerance factor": "1"}},
-    "loose": {"contact": {"friction pass tolerance factor": "100"}},
+    "baseline": {"contact": {"friction pass tolerance factor": "1"},
+                 "solver": PAPER},
+    "loose": {"contact": {"friction pass tolerance factor": "100"},
+              "solver": PAPER},
     "threads2": {"contact": {"friction pass tolerance factor": "1"},
-                 "run": {"threads": "2"}},
+                 "solver": PAPER, "run": {"threads": "2"}},
     "cg": {"contact": {"friction pass tolerance factor": "1"},
-           "solver": {"linear solver": "CG AMG"}},
+           "solver": dict(PAPER, **{"linear solver": "CG AMG"})},
+    "material": {"contact": {"friction pass tolerance factor": "1"},
+                 "solver": MATERIAL},
+    "material_loose": {"contact": {"friction pass tolerance factor": "100"},
+                       "solver": MATERIAL},
+    "material_loose_reuse": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "10"})},
+    "material_loose_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": MATERIAL, "run": {"threads": "2"}},
+    "material_loose_reuse_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "10"}),
+        "run": {"threads": "2"}},
 }
 TIMES = ["assembly_time", "factorization_time", "solve_time",
          "line_search_time"]
 
 
-def write_prm(folder, scene, name, steps, changes):
-    run = {"name": name, "end time": f"{steps * 1e-2:.6g}", "quiet": "true",
+def write_prm(folder, scene, name, end_time, changes):
+    run = {"name": name, "end time": f"{end_time:.6g}", "quiet": "true",
            "threads": "1"}
     run.update(changes.get("run", {}))
     lines = [f"include {os.path.join(SCENES, scene + '.prm')}"]
@@ -60,6 +87,7 @@ def write_prm(folder, scene, name, steps, changes):
     sections["run"] = run
     sections["output"] = {"directory": folder, "interval": "100",
                           "write particles": "false", "write grid": "false"}
+    sections["output"].update(changes.get("output", {}))
     for section, entries in sections.items():
         lines.append(f"subsection {section}")
         lines += [f"  set {key} = {value}" for key, value in entries.items()]
@@ -70,16 +98,48 @@ def write_prm(folder, scene, name, steps, changes):
     return path
 
 
-def run(binary, folder, scene, name, steps, changes):
-    path = write_prm(folder, scene, name, steps, changes)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
+def run_to_start(binary, build, scene, start):
+    """The scene's state at t = start: a checkpoint in a folder kept in the
+    build folder, made once (and continued if an earlier try stopped)."""
+    folder = os.path.join(build, "twist_slices", f"{scene}_t{start:g}")
+    checkpoint = os.path.join(folder, "prefix", "checkpoint.h5")
+    done = os.path.join(folder, "prefix", "reached")
+    if os.path.exists(done):
+        return os.path.join(folder, "prefix")
+    os.makedirs(folder, exist_ok=True)
+    changes = dict(VARIANTS["material_loose"])
+    changes["run"] = {"threads": "2"}
+    changes["checkpoint"] = {"interval": f"{start:g}",
+                             "wall time interval": "600", "resume": "auto"}
+    path = write_prm(folder, scene, "prefix", start, changes)
+    print(f"running {scene} to t = {start:g} s for the slices' start state "
+          f"({folder})", flush=True)
     subprocess.run([binary, path], cwd=folder, check=True,
                    capture_output=True, text=True)
-    wall = time.perf_counter() - start
+    if not os.path.exists(checkpoint):
+        raise RuntimeError(f"no checkpoint {checkpoint} after the run to "
+                           f"t = {start:g}")
+    open(done, "w").close()
+    return os.path.join(folder, "prefix")
+
+
+def run(binary, folder, scene, name, steps, changes, start=0., prefix=None):
+    if prefix is not None:
+        # the variant continues the run to `start` in a copy of its folder
+        shutil.copytree(prefix, os.path.join(folder, name))
+        changes = dict(changes)
+        changes["checkpoint"] = {"resume": "true"}
+    path = write_prm(folder, scene, name, start + steps * 1e-2, changes)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    clock = time.perf_counter()
+    subprocess.run([binary, path], cwd=folder, check=True,
+                   capture_output=True, text=True)
+    wall = time.perf_counter() - clock
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(os.path.join(folder, name, "diagnostics.csv")) as f:
-        rows = list(csv.DictReader(f))[1:]  # row 0: the initial state
+        # the slice's rows (row 0 of a run from t = 0: the initial state)
+        rows = [r for r in csv.DictReader(f)
+                if float(r["time"]) > start + 1e-9]
     result = {
         "wall time [s]": wall,
         "CPU time [s]": (after.ru_utime - before.ru_utime +
@@ -119,13 +179,16 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scene", default="twist_mu0_2")
     parser.add_argument("--steps", type=int, default=10)
+    parser.add_argument("--start", type=float, default=0.)
     parser.add_argument("--variants", default=",".join(VARIANTS))
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--baseline-build", default=None)
     parser.add_argument("--output", default=None)
     args = parser.parse_args()
+    suffix = f"_t{args.start:g}" if args.start > 0. else ""
     output = args.output or os.path.join(
-        ROOT, "benchmarks", "results", f"twist_slices_{args.scene}.json")
+        ROOT, "benchmarks", "results",
+        f"twist_slices_{args.scene}{suffix}.json")
     names = [v.strip() for v in args.variants.split(",") if v.strip()]
     unknown = [v for v in names if v not in VARIANTS]
     if unknown:
@@ -135,12 +198,16 @@ def main():
     if args.baseline_build:
         jobs.append(("baseline (other build)",
                      os.path.join(args.baseline_build, "bfemp"), "baseline"))
+    prefix = None
+    if args.start > 0.:
+        prefix = run_to_start(os.path.join(args.build, "bfemp"), args.build,
+                              args.scene, args.start)
     runs = {}
     with tempfile.TemporaryDirectory() as folder:
         for label, binary, variant in jobs:
             name = label.replace(" ", "_").replace("(", "").replace(")", "")
             runs[label] = run(binary, folder, args.scene, name, args.steps,
-                              VARIANTS[variant])
+                              VARIANTS[variant], args.start, prefix)
             runs[label]["changes"] = VARIANTS[variant]
             r = runs[label]
             print(f"{label}: {r['wall time [s]']:.1f} s wall, "
@@ -151,6 +218,7 @@ def main():
         "scene": os.path.relpath(os.path.join(SCENES, args.scene + ".prm"),
                                  ROOT),
         "steps": args.steps,
+        "start time [s]": args.start,
         "date": time.strftime("%Y-%m-%d"),
         "machine": {"processor": platform.processor() or platform.machine(),
                     "cpus": os.cpu_count(), "system": platform.platform()},

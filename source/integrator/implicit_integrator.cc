@@ -39,7 +39,8 @@ namespace bfemp
     , mpm_elasticity(grid, particles, materials, dofs, cmpm)
     , mpm_correction_elasticity(mpm_elasticity)
     , potential(dofs)
-    , newton(solver)
+    , solver_parameters(solver)
+    , newton(solver_parameters)
   {
     // A scene switches on only the terms it has; each is registered once
     // with what the step does with it.
@@ -127,6 +128,9 @@ namespace bfemp
     for (const RegisteredTerm &registered : registered_terms)
       terms.push_back(registered.term);
     potential.set_terms(terms);
+    if (solver_parameters.newton_increment == "material points")
+      potential.set_increment_measure(
+        [this](const Vector<double> &p) { return material_increment(p); });
     last_contact.active = with_contact;
   }
 
@@ -465,6 +469,24 @@ namespace bfemp
 
 
   template <int dim>
+  double
+  ImplicitIntegrator<dim>::material_increment(const Vector<double> &p) const
+  {
+    // FEM nodes are material points themselves; the unified numbering puts
+    // them first (DofSpace).
+    double largest = 0.;
+    for (unsigned int i = 0; i < dim * dofs.n_fem_nodes(); ++i)
+      largest = std::max(largest, std::abs(p[i]));
+    if (with_mpm)
+      largest =
+        std::max(largest,
+                 mpm_elasticity.material_increment(p, grid.lattice().dx));
+    return largest;
+  }
+
+
+
+  template <int dim>
   void
   ImplicitIntegrator<dim>::minimize_with_friction(Vector<double>    &u,
                                                   const double       dt,
@@ -635,6 +657,7 @@ namespace bfemp
         if (with_friction)
           friction->update(u);
         potential.setup_system();
+        newton.forget_factorization();
         minimize_with_friction(u,
                                dt,
                                "step " + std::to_string(step_number) +

@@ -263,6 +263,25 @@ namespace bfemp
 
 
 
+  template <int dim>
+  void
+  IncrementalPotential<dim>::set_increment_measure(
+    std::function<double(const Vector<double> &)> measure)
+  {
+    increment_measure = std::move(measure);
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementalPotential<dim>::increment_norm(const Vector<double> &p) const
+  {
+    return increment_measure ? increment_measure(p) : p.linfty_norm();
+  }
+
+
+
   template class IncrementalPotential<2>;
   template class IncrementalPotential<3>;
 } // namespace bfemp

@@ -60,12 +60,27 @@ namespace bfemp
         material = static_cast<unsigned int>(properties[Layout::material_id]);
       }
 
-      /** Adds node @p node with kernel gradient @p gradient. */
+      /** Adds node @p node with kernel weight @p weight and gradient
+       *  @p gradient. */
       void
-      add_node(const unsigned int node, const Tensor<1, dim> &gradient)
+      add_node(const unsigned int    node,
+               const double          weight,
+               const Tensor<1, dim> &gradient)
       {
         nodes[n]              = node;
+        weights[n]            = weight;
         mapped_gradients[n++] = transpose(start_F) * gradient;
+      }
+
+      /** sum_i w_ip p_i: the particle's displacement along p. */
+      template <typename Field>
+      Tensor<1, dim>
+      displacement(const Field &p) const
+      {
+        Tensor<1, dim> u_p;
+        for (unsigned int k = 0; k < n; ++k)
+          u_p += weights[k] * nodal<dim>(p, nodes[k]);
+        return u_p;
       }
 
       /** F_p(u) = F_p^n + sum_i u_i g^_ip^T (eq. 25 in displacements). */
@@ -130,6 +145,7 @@ namespace bfemp
 
       unsigned int   n = 0;
       unsigned int   nodes[max_n];
+      double         weights[max_n];
       Tensor<1, dim> mapped_gradients[max_n];
       Tensor<2, dim> start_F;
       double         volume   = 0.;
@@ -157,7 +173,7 @@ namespace bfemp
           {
             const unsigned int node = dofs.grid_node(kernel.node[k]);
             if (node != DofSpace<dim>::invalid)
-              this->add_node(node, kernel.gradient[k]);
+              this->add_node(node, kernel.weight[k], kernel.gradient[k]);
           }
       }
 
@@ -190,7 +206,7 @@ namespace bfemp
         typename CoarseGrid<dim>::FineStencil fine;
         element.fine_stencil(particle.get_location(), fine);
         for (unsigned int k = 0; k < CoarseGrid<dim>::n_stencil; ++k)
-          this->add_node(fine.node[k], fine.gradient[k]);
+          this->add_node(fine.node[k], fine.value[k], fine.gradient[k]);
       }
     };
 
@@ -621,6 +637,30 @@ namespace bfemp
       return particles
         .template sum<Minimum>(
           [&](const auto &particle) { return det(make_stencil(particle), u); })
+        .value;
+    });
+  }
+
+  template <int dim>
+  double
+  MpmElasticityTerm<dim>::material_increment(const Vector<double> &p,
+                                             const double          length) const
+  {
+    // A particle's state after the step is x_p + u_p and (I + grad u) F_p^n
+    // (G2P, Tables 1-3): the increment of both, the second over @p length.
+    const auto increment = [length](const auto &s, const auto &p_s) {
+      Maximum m;
+      m += s.displacement(p_s).norm();
+      m += length * s.direction(p_s).norm();
+      return m;
+    };
+    if (cmpm != nullptr)
+      return sum_over_elements<Maximum>(p, increment).value;
+    return with_kernel([&](const auto &make_stencil) {
+      return particles
+        .template sum<Maximum>([&](const auto &particle) {
+          return increment(make_stencil(particle), p);
+        })
         .value;
     });
   }

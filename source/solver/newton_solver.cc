@@ -2,6 +2,8 @@
 #include <bfemp/solver/newton_solver.h>
 
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 
 #include <cmath>
 #include <limits>
@@ -19,6 +21,7 @@ namespace bfemp
     partial_constraint_moves += other.partial_constraint_moves;
     carried_constraint_moves += other.carried_constraint_moves;
     projected_hessians += other.projected_hessians;
+    factorizations += other.factorizations;
     residual            = other.residual;
     energy              = other.energy;
     minimum_determinant = other.minimum_determinant;
@@ -210,11 +213,54 @@ namespace bfemp
     coupling *= -1. / h;
     Vector<double> response(u.size());
     solver->factorize(hessian);
+    factorization_reusable = true;
     solver->solve(coupling, response);
     potential.dof_space().project(response);
     if (!std::isfinite(response.linfty_norm()))
       response = 0.;
     return response;
+  }
+
+
+
+  template <int dim>
+  bool
+  NewtonSolver<dim>::solve_with_last_factorization(
+    const SparseMatrix<double> &hessian,
+    const Vector<double>       &minus_gradient,
+    Vector<double>             &direction) const
+  {
+    // Within a step the Hessian changes little from one iteration to the
+    // next once the contact set has settled: an earlier factorization is
+    // then a preconditioner under which CG needs a few iterations, each a
+    // pair of triangular solves, instead of a new factorization.
+    struct LastFactorization
+    {
+      LinearSolver &solver;
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        solver.solve(src, dst);
+      }
+    };
+    SolverControl            control(parameters.factorization_reuse,
+                          1e-8 * minus_gradient.l2_norm(),
+                          false,
+                          false);
+    SolverCG<Vector<double>> cg(control);
+    direction.reinit(minus_gradient.size());
+    try
+      {
+        cg.solve(hessian,
+                 direction,
+                 minus_gradient,
+                 LastFactorization{*solver});
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return false;
+      }
+    return std::isfinite(direction.linfty_norm());
   }
 
 
@@ -237,12 +283,25 @@ namespace bfemp
     try
       {
         timer.restart();
+        if (parameters.factorization_reuse > 0 && factorization_reusable &&
+            solve_with_last_factorization(hessian, minus_gradient, direction))
+          {
+            potential.dof_space().project(direction);
+            statistics.solve_time += timer.wall_time();
+            // CG on an indefinite matrix need not descend: then the
+            // factorization below decides.
+            if (-(minus_gradient * direction) < 0.)
+              return true;
+            timer.restart();
+          }
         bool factorized = true;
+        ++statistics.factorizations;
         if (kind == HessianKind::projected)
           solver->factorize(hessian);
         else
           factorized = solver->factorize_if_positive_definite(hessian);
         statistics.factorization_time += timer.wall_time();
+        factorization_reusable = factorized;
         if (!factorized)
           return false;
         timer.restart();
@@ -353,7 +412,7 @@ namespace bfemp
           }
         if (!std::isfinite(direction.linfty_norm()))
           fail("the linear solver returned a non-finite Newton direction");
-        statistics.residual = direction.linfty_norm() / dt;
+        statistics.residual = potential.increment_norm(direction) / dt;
 
         timer.restart();
         // gradient holds -g: the slope along p is g.p = -(-g).p.

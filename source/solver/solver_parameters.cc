@@ -64,6 +64,31 @@ namespace bfemp
                       Patterns::Integer(1),
                       "[-] Step halvings before the line search reports "
                       "failure.");
+    prm.declare_entry(
+      "Newton increment",
+      "unknowns",
+      Patterns::Selection("unknowns|material points"),
+      "[-] What the stopping test ||p|| / dt < 'Newton tolerance' measures "
+      "the Newton increment p on. unknowns: the largest entry of p over "
+      "the FEM nodes and grid nodes, as BFEMP Section 5 writes it. "
+      "material points: the largest change p gives what the step hands on "
+      "to the next, FEM nodes |p_a| and, for each particle, its "
+      "displacement |sum_i w_ip p_i| and h |dF_p| (h the grid's cell "
+      "size). Grid nodes at the edge of a body's kernel support carry "
+      "little mass and stiffness: their entries of p can be 100 times "
+      "larger than any particle's move, and with 'unknowns' they decide "
+      "when Newton stops.");
+    prm.declare_entry(
+      "factorization reuse",
+      "0",
+      Patterns::Integer(0),
+      "[-] With CHOLMOD or UMFPACK: before factorizing a Newton iteration's "
+      "Hessian, try conjugate gradients preconditioned by the last "
+      "factorization of the same time step, to a residual of 1e-8 times "
+      "||g||, for at most this many iterations; factorize only if they do "
+      "not reach it (or the direction does not descend). 0: factorize "
+      "every iteration, as the paper does. Must be 0 with CG AMG, which "
+      "has no factorization.");
     prm.declare_entry("check invariants",
                       "false",
                       Patterns::Bool(),
@@ -88,6 +113,8 @@ namespace bfemp
     step_bound_fraction       = prm.get_double("step bound fraction");
     maximum_backtracks        = prm.get_integer("maximum backtracks");
     check_invariants          = prm.get_bool("check invariants");
+    newton_increment          = prm.get("Newton increment");
+    factorization_reuse       = prm.get_integer("factorization reuse");
     prm.leave_subsection();
 
     require_input(newton_tolerance > 0.,
@@ -100,6 +127,12 @@ namespace bfemp
                   "CG tolerance",
                   to_input_string(cg_tolerance),
                   "must lie in (0, 1)");
+    require_input(factorization_reuse == 0 || linear_solver != "CG AMG",
+                  "solver",
+                  "factorization reuse",
+                  std::to_string(factorization_reuse),
+                  "must be 0 with 'linear solver' = CG AMG (it has no "
+                  "factorization to reuse)");
     require_input(armijo_constant >= 0. && armijo_constant < 0.5,
                   "solver",
                   "Armijo constant",

@@ -159,7 +159,8 @@ main(int argc, char **argv)
     const std::vector<std::string> counters = {"newton_iterations",
                                                "line_search_backtracks",
                                                "step_bound_hits",
-                                               "projected_hessians"};
+                                               "projected_hessians",
+                                               "factorizations"};
     const auto                    &header   = rows[0];
     for (const std::string &counter : counters)
       {

@@ -43,6 +43,7 @@
 using namespace dealii;
 using namespace bfemp;
 using bfemp_tests::check;
+using bfemp_tests::check_below;
 
 namespace
 {
@@ -497,6 +498,54 @@ namespace
             what + "small strain: Hessian matches differences of gradient");
       check(energy_error < 1e-12 && det_error < 1e-12,
             what + "small strain: F_p(u) = transfer's updated F_p");
+    }
+
+    // The Newton increment on the material points (`solver/Newton
+    // increment`): a translation c moves every particle by c and leaves F
+    // (partition of unity); a linear field p_i = B x_i moves particle p by
+    // B x_p and F_p by B F_p^n (B-splines reproduce linear fields).
+    {
+      MpmScene<dim>  scene(degree, model, 1.05 * rotation<dim>(0.2), 0.005);
+      const double   dx = scene.grid.lattice().dx;
+      Tensor<1, dim> c;
+      for (unsigned int d = 0; d < dim; ++d)
+        c[d] = 1e-3 * (d + 1.);
+      const Tensor<2, dim> B = 1e-2 * (rotation<dim>(0.3) - I);
+      Vector<double> translation(scene.dofs.n_dofs()), linear(translation);
+      for (unsigned int node = 0; node < scene.dofs.n_nodes(); ++node)
+        {
+          DofSpace<dim>::set(translation, node, c);
+          DofSpace<dim>::set(linear,
+                             node,
+                             B * scene.grid.lattice().node_position(
+                                   scene.dofs.lattice_node(node)));
+        }
+      double expected = 0.;
+      for (const auto &particle : scene.particles.handler())
+        {
+          const Tensor<2, dim> F = MpmScene<dim>::Layout::get_tensor(
+            particle.get_properties(),
+            MpmScene<dim>::Layout::deformation_gradient);
+          expected =
+            std::max({expected,
+                      (B * Tensor<1, dim>(particle.get_location())).norm(),
+                      dx * (B * F).norm()});
+        }
+      const double translation_error =
+        std::abs(scene.elasticity.material_increment(translation, dx) -
+                 c.norm()) /
+        c.norm();
+      const double linear_error =
+        std::abs(scene.elasticity.material_increment(linear, dx) - expected) /
+        expected;
+      check_below(translation_error,
+                  1e-12,
+                  what + "material increment of a translation: relative "
+                         "error against |c|");
+      check_below(linear_error,
+                  1e-12,
+                  what + "material increment of a linear field: relative "
+                         "error against max(|B x_p|, h |B F_p|)");
     }
 
     // F_p^n compressed and sheared, u random: projection active.

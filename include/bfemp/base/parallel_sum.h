@@ -55,6 +55,26 @@ namespace bfemp
       return *this;
     }
   };
+
+  /** A maximum that can be accumulated with += (for chunked_sum). */
+  struct Maximum
+  {
+    double value = -std::numeric_limits<double>::infinity();
+
+    Maximum &
+    operator+=(const Maximum &other)
+    {
+      value = std::max(value, other.value);
+      return *this;
+    }
+
+    Maximum &
+    operator+=(const double other)
+    {
+      value = std::max(value, other);
+      return *this;
+    }
+  };
 } // namespace bfemp
 
 #endif

@@ -206,6 +206,14 @@ namespace bfemp
                            const std::string &label);
 
     /**
+     * `solver/Newton increment = material points`: the increment @p p
+     * measured on what the step hands on, the largest of |p_a| over FEM
+     * nodes and, over particles, |sum_i w_ip p_i| and h |dF_p(p)|.
+     */
+    double
+    material_increment(const Vector<double> &p) const;
+
+    /**
      * The acceleration the predictor and eq. 21 add for @p node: gravity,
      * except for grid nodes of substepped MPM bodies, whose start velocity
      * v*_k already holds it.
@@ -263,6 +271,7 @@ namespace bfemp
     std::unique_ptr<BarrierTerm<dim>>     barrier;
     std::unique_ptr<FrictionTerm<dim>>    friction;
     IncrementalPotential<dim>             potential;
+    const SolverParameters                solver_parameters;
     NewtonSolver<dim>                     newton;
 
     /**

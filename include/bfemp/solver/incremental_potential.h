@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <vector>
 
 namespace bfemp
@@ -70,6 +71,19 @@ namespace bfemp
                const Vector<double>   &p,
                const EnergyTerm<dim> **limiting = nullptr) const;
 
+    /**
+     * How Newton measures an increment p for its stopping test: by default
+     * ||p||_inf over the unknowns (BFEMP Section 5); @p measure replaces it
+     * (an empty function restores the default).
+     */
+    void
+    set_increment_measure(
+      std::function<double(const Vector<double> &)> measure);
+
+    /** The increment measure of @p p (see set_increment_measure()). */
+    double
+    increment_norm(const Vector<double> &p) const;
+
     /** Forwards the obstacle path to the terms (EnergyTerm). */
     void
     set_obstacle_path(const double from, const double to) const;
@@ -102,11 +116,12 @@ namespace bfemp
               const unsigned int    j,
               const Tensor<2, dim> &b);
 
-    const DofSpace<dim>                 &dofs;
-    std::vector<const EnergyTerm<dim> *> terms;
-    SparsityPattern                      pattern;
-    SparseMatrix<double>                 matrix;
-    unsigned int                         n_pattern_builds = 0;
+    const DofSpace<dim>                          &dofs;
+    std::vector<const EnergyTerm<dim> *>          terms;
+    SparsityPattern                               pattern;
+    SparseMatrix<double>                          matrix;
+    unsigned int                                  n_pattern_builds = 0;
+    std::function<double(const Vector<double> &)> increment_measure;
 
   public:
     /** How often setup_system() has built a pattern (diagnostics). */

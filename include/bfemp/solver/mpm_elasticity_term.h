@@ -86,6 +86,16 @@ namespace bfemp
     double
     minimum_determinant(const Vector<double> &u) const override;
 
+    /**
+     * The largest change of a particle's state along the nodal direction
+     * @p p: max over particles of |sum_i w_ip p_i| and @p length |dF_p(p)|
+     * (Frobenius), the displacement and the deformation gradient that G2P
+     * gives the particle. The Newton increment measured on the material
+     * rather than on the grid (`solver/Newton increment`).
+     */
+    double
+    material_increment(const Vector<double> &p, const double length) const;
+
   private:
     /** Calls f(maker) with the stencil maker of the grid's B-spline kernel
      *  (of the grid's degree). */

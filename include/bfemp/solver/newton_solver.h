@@ -34,6 +34,9 @@ namespace bfemp
      * 'Hessian projection = always', the fall-backs with 'when indefinite'.
      */
     unsigned int projected_hessians = 0;
+    /** Factorizations of a Hessian (fewer than the iterations with
+     *  `solver/factorization reuse`, more where a fall-back refactorizes). */
+    unsigned int factorizations = 0;
     /** ||p||_inf / dt of the last iteration [m/s]. */
     double residual = 0.;
     /** E at the minimizer. */
@@ -90,6 +93,16 @@ namespace bfemp
 
     const LinearSolver &
     linear_solver() const;
+
+    /**
+     * Drops the factorization that `solver/factorization reuse` would use
+     * next: the unknowns are numbered anew at every time step.
+     */
+    void
+    forget_factorization()
+    {
+      factorization_reusable = false;
+    }
 
     /** eps_d, 'solver/Newton tolerance' [m/s]. */
     double
@@ -155,8 +168,21 @@ namespace bfemp
                 double                          &trial_energy,
                 NewtonStatistics                &statistics) const;
 
+    /**
+     * `solver/factorization reuse` > 0: solves H p = -g by conjugate
+     * gradients preconditioned with the last factorization (of an earlier
+     * Hessian of the step) to 1e-8 relative residual; false if that takes
+     * more than the entry's iterations.
+     */
+    bool
+    solve_with_last_factorization(const SparseMatrix<double> &hessian,
+                                  const Vector<double>       &minus_gradient,
+                                  Vector<double>             &direction) const;
+
     const SolverParameters        parameters;
     std::unique_ptr<LinearSolver> solver;
+    /** Whether the solver holds a factorization of this step's unknowns. */
+    mutable bool factorization_reusable = false;
   };
 } // namespace bfemp
 

@@ -1,0 +1,120 @@
+#ifndef bfemp_tests_experiments_twist_runs_h
+#define bfemp_tests_experiments_twist_runs_h
+
+// Runs of the reduced 3D twist (prm/experiments/6_7_twist/) through the
+// first 0.4 s of its compression, while the contact grows, for the tests
+// that compare a variant of the Newton loop with the loop without it: the
+// run with a few prm entries changed, its Newton iterations and
+// factorizations, and the distance of two runs' end states against the
+// N eps_d dt that N steps of Newton tolerance allow (each step's answer is
+// within about one last Newton increment, at most eps_d dt, of the exact
+// minimizer).
+
+#include <algorithm>
+#include <string>
+
+#include "../format.h"
+#include "../implicit/implicit_scene.h"
+
+namespace twist_runs
+{
+  using namespace implicit_scene;
+
+  constexpr double end_time = 0.4;
+  constexpr double dt       = 1e-2;
+  constexpr double eps_d    = 1e-3;
+  constexpr double n_steps  = end_time / dt;
+
+  /** @p scene in prm/experiments/6_7_twist/, without ".prm". */
+  inline std::string
+  scene_prm(const std::string &scene)
+  {
+    return BFEMP_SOURCE_DIR "/prm/experiments/6_7_twist/" + scene + ".prm";
+  }
+
+  struct Run
+  {
+    Outcome<3> outcome;
+    double     newton_iterations = 0.;
+    double     factorizations    = 0.;
+  };
+
+  /**
+   * Runs @p scene as results/<name> with @p changes (prm subsections) on
+   * top, one thread, to end_time; checks that it gets there with no
+   * particle inside the shell.
+   */
+  inline Run
+  run_variant(const std::string &scene,
+              const std::string &name,
+              const std::string &changes)
+  {
+    write(name + ".prm",
+          "include " + scene_prm(scene) +
+            "\n"
+            "subsection run\n  set name = " +
+            name + "\n  set end time = " + rounded(end_time, 6) +
+            "\n  set quiet = true\n  set threads = 1\nend\n"
+            "subsection output\n  set directory = results\n"
+            "  set interval = 1\n  set write particles = false\n"
+            "  set write grid = false\nend\n" +
+            changes);
+    Run result{run<3>(name + ".prm")};
+    bfemp_tests::check(result.outcome.error.empty(),
+                       name + ": the run reached the end time" +
+                         (result.outcome.error.empty()
+                            ? ""
+                            : ": " + result.outcome.error));
+    const auto c = columns(name,
+                           {"newton_iterations",
+                            "particles_in_fem",
+                            "min_distance",
+                            "factorizations"});
+    bfemp_tests::check(finite({c[0], c[1]}) && max_of(c[1]) == 0. &&
+                         min_of(c[2]) > 0.,
+                       name +
+                         ": no particle inside the shell, smallest "
+                         "distance " +
+                         bfemp_tests::format("%.2e", min_of(c[2])) + " m > 0");
+    for (unsigned int i = 0; i < c[0].size(); ++i)
+      {
+        result.newton_iterations += c[0][i];
+        result.factorizations += c[3][i];
+      }
+    deallog << name << ": "
+            << static_cast<unsigned int>(result.newton_iterations)
+            << " Newton iterations, "
+            << static_cast<unsigned int>(result.factorizations)
+            << " factorizations in " << c[0].size() - 1 << " steps"
+            << std::endl;
+    return result;
+  }
+
+  /** The largest particle and shell node distances between two runs' ends,
+   *  each checked against N eps_d dt. */
+  inline void
+  compare_end_states(const Run &a, const Run &b, const std::string &what)
+  {
+    double particles = 0.;
+    for (const auto &[id, x] : a.outcome.particles)
+      particles = std::max(particles, x.distance(b.outcome.particles.at(id)));
+    double nodes = 0.;
+    for (unsigned int k = 0; k < a.outcome.fem_positions.size(); ++k)
+      for (unsigned int i = 0; i < a.outcome.fem_positions[k].size(); ++i)
+        nodes = std::max(nodes,
+                         a.outcome.fem_positions[k][i].distance(
+                           b.outcome.fem_positions[k][i]));
+    const double bound = n_steps * eps_d * dt;
+    bfemp_tests::check_below(particles,
+                             bound,
+                             "end states: largest particle distance between " +
+                               what + " in m");
+    bfemp_tests::check_below(nodes,
+                             bound,
+                             "end states: largest shell node distance "
+                             "between " +
+                               what + " in m");
+  }
+} // namespace twist_runs
+
+#endif
