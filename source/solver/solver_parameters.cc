@@ -10,9 +10,10 @@ namespace bfemp
     prm.declare_entry("Newton tolerance",
                       "1e-6",
                       Patterns::Double(),
-                      "[m/s] eps_d: Newton stops when the largest entry of "
-                      "the Newton increment divided by dt, ||p||_inf / dt, "
-                      "falls below this (BFEMP Section 5); > 0.");
+                      "[m/s] eps_d: Newton stops when the Newton increment "
+                      "divided by dt, ||p|| / dt, falls below this (BFEMP "
+                      "Section 5: the largest entry of p; 'Newton "
+                      "increment' chooses what p is measured on); > 0.");
     prm.declare_entry("maximum Newton iterations",
                       "100",
                       Patterns::Integer(1),
