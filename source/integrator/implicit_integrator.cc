@@ -39,8 +39,7 @@ namespace bfemp
     , mpm_elasticity(grid, particles, materials, dofs, cmpm)
     , mpm_correction_elasticity(mpm_elasticity)
     , potential(dofs)
-    , solver_parameters(solver)
-    , newton(solver_parameters)
+    , newton(solver)
   {
     // A scene switches on only the terms it has; each is registered once
     // with what the step does with it.
@@ -128,7 +127,7 @@ namespace bfemp
     for (const RegisteredTerm &registered : registered_terms)
       terms.push_back(registered.term);
     potential.set_terms(terms);
-    if (solver_parameters.newton_increment == "material points")
+    if (solver.newton_increment == "material points")
       potential.set_increment_measure(
         [this](const Vector<double> &p) { return material_increment(p); });
     last_contact.active = with_contact;

@@ -282,18 +282,19 @@ namespace bfemp
     // the linear solver on it hands the iteration to the projected one.
     try
       {
-        timer.restart();
-        if (parameters.factorization_reuse > 0 && factorization_reusable &&
-            solve_with_last_factorization(hessian, minus_gradient, direction))
+        if (parameters.factorization_reuse > 0 && factorization_reusable)
           {
+            timer.restart();
+            const bool solved =
+              solve_with_last_factorization(hessian, minus_gradient, direction);
             potential.dof_space().project(direction);
             statistics.solve_time += timer.wall_time();
             // CG on an indefinite matrix need not descend: then the
             // factorization below decides.
-            if (-(minus_gradient * direction) < 0.)
+            if (solved && -(minus_gradient * direction) < 0.)
               return true;
-            timer.restart();
           }
+        timer.restart();
         bool factorized = true;
         ++statistics.factorizations;
         if (kind == HessianKind::projected)
@@ -359,7 +360,7 @@ namespace bfemp
       std::ostringstream message;
       message << step_label << ": " << what << " after "
               << statistics.iterations << " Newton iterations (residual "
-              << "||p||_inf / dt = " << statistics.residual
+              << "||p|| / dt = " << statistics.residual
               << " m/s, 'solver/Newton tolerance' = "
               << parameters.newton_tolerance << " m/s, energy " << energy
               << " J";

@@ -271,7 +271,6 @@ namespace bfemp
     std::unique_ptr<BarrierTerm<dim>>     barrier;
     std::unique_ptr<FrictionTerm<dim>>    friction;
     IncrementalPotential<dim>             potential;
-    const SolverParameters                solver_parameters;
     NewtonSolver<dim>                     newton;
 
     /**

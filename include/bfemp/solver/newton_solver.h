@@ -34,10 +34,12 @@ namespace bfemp
      * 'Hessian projection = always', the fall-backs with 'when indefinite'.
      */
     unsigned int projected_hessians = 0;
-    /** Factorizations of a Hessian (fewer than the iterations with
-     *  `solver/factorization reuse`, more where a fall-back refactorizes). */
+    /** Factorizations of a Newton iteration's Hessian (fewer than the
+     *  iterations with `solver/factorization reuse`, more where a fall-back
+     *  refactorizes; the constraint moves' response solves not counted). */
     unsigned int factorizations = 0;
-    /** ||p||_inf / dt of the last iteration [m/s]. */
+    /** ||p|| / dt of the last iteration [m/s], p measured as
+     *  IncrementalPotential::increment_norm() says. */
     double residual = 0.;
     /** E at the minimizer. */
     double energy = 0.;
@@ -63,7 +65,9 @@ namespace bfemp
    * one; 'solver/Hessian projection'), solves H p = -g, starts the line search
    * at the fraction 'step bound fraction' of the largest step that keeps every
    * det F > 0 (and every contact distance > 0), capped at 1, and halves it
-   * until the Armijo condition holds. It stops when ||p||_inf / dt < eps_d.
+   * until the Armijo condition holds. It stops when ||p|| / dt < eps_d, with
+   * ||p|| = ||p||_inf or the measure of IncrementalPotential::
+   * increment_norm() ('solver/Newton increment').
    */
   template <int dim>
   class NewtonSolver
@@ -79,7 +83,7 @@ namespace bfemp
      * targets and obstacles to the ends of their paths as fast as the same
      * det F and collision filter allows (move_constraints()); the Newton
      * iterations run in between, and convergence needs both there.
-     * Stops at ||p||_inf / dt < @p stop_tolerance (the Newton tolerance eps_d
+     * Stops at ||p|| / dt < @p stop_tolerance (the Newton tolerance eps_d
      * where 0). Throws SimulationError naming @p step_label, the residual
      * and the energy if it does not converge.
      */
