@@ -1,6 +1,7 @@
 #include <bfemp/cmpm/cmpm_inertia_term.h>
 #include <bfemp/cmpm/element_assembly.h>
 #include <bfemp/particles/particle_layout.h>
+#include <bfemp/solver/node_sparsity.h>
 
 #include <algorithm>
 
@@ -26,6 +27,8 @@ namespace bfemp
     this->dt             = dt;
     this->gravity_weight = gravity_weight;
     this->gravity        = gravity;
+    // the particles and control matrices of a new step (or pass)
+    mass_assembled = false;
   }
 
 
@@ -154,6 +157,47 @@ namespace bfemp
   CmpmInertiaTerm<dim>::add_hessian(const Vector<double> &,
                                     SparseMatrix<double> &hessian,
                                     const HessianKind) const
+  {
+    if (!mass_assembled)
+      {
+        NodeSparsity couplings(dofs.n_nodes());
+        add_couplings(couplings);
+        mass_matrix.clear();
+        couplings.build(dim, mass_pattern);
+        mass_matrix.reinit(mass_pattern);
+        assemble_mass(mass_matrix);
+        mass_assembled = true;
+      }
+    // Row by row, columns ascending (deal.II stores the diagonal first),
+    // so that each row of the Hessian is walked once.
+    thread_local std::vector<types::global_dof_index> columns;
+    thread_local std::vector<double>                  values;
+    for (unsigned int row = 0; row < mass_matrix.m(); ++row)
+      {
+        columns.clear();
+        values.clear();
+        for (auto entry = mass_matrix.begin(row); entry != mass_matrix.end(row);
+             ++entry)
+          {
+            columns.push_back(entry->column());
+            values.push_back(entry->value());
+          }
+        // move the diagonal from the front to its place
+        for (std::size_t k = 1; k < columns.size() && columns[k] < row; ++k)
+          {
+            std::swap(columns[k - 1], columns[k]);
+            std::swap(values[k - 1], values[k]);
+          }
+        hessian
+          .add(row, columns.size(), columns.data(), values.data(), false, true);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CmpmInertiaTerm<dim>::assemble_mass(SparseMatrix<double> &hessian) const
   {
     using Layout = ParticleLayout<dim>;
     // the fine consistent mass sum_p m_p B_kp B_lp I over the fine nodes the

@@ -1,6 +1,7 @@
 #include <bfemp/cmpm/coarsened_shape_functions.h>
 
 #include <deal.II/base/parallel.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,11 +17,21 @@ namespace bfemp
     , control(grid.n_elements_total())
     , bound(grid.n_elements_total(), 0.)
   {
+    const unsigned int r = grid.n_local_nodes();
+    boundary_rank.assign(grid.n_fine(), -1);
+    int n_boundary = 0;
+    for (unsigned int k = 0; k < grid.n_fine(); ++k)
+      if (grid.interior_index(k) < 0)
+        boundary_rank[k] = n_boundary++;
+    psi_dense.assign(n_boundary * r, 0.);
     for (unsigned int k = 0; k < grid.n_fine(); ++k)
       {
         double row_sum = 0.;
-        for (const auto &entry : psi.row(k))
-          row_sum += std::abs(entry.second);
+        for (const auto &[I, weight] : psi.row(k))
+          {
+            row_sum += std::abs(weight);
+            psi_dense[boundary_rank[k] * r + I] = weight;
+          }
         boundary_bound = std::max(boundary_bound, row_sum);
       }
   }
@@ -339,64 +350,167 @@ namespace bfemp
     AssertDimension(upper.size(), m * m);
     const unsigned int                 r = coarse_grid.n_local_nodes();
     const std::vector<Tensor<2, dim>> &p = control[element];
+    const unsigned int n_interior        = coarse_grid.n_interior_fine();
 
-    // G = K p, row by row of fine nodes: G[i * r + J] = sum_j K_ij p_jJ
-    thread_local std::vector<Tensor<2, dim>>                G;
+    // p has two kinds of rows (eq. 31): psi_kI I on the boundary fine nodes
+    // and dense blocks on the interior ones. K_alpha = p^T G with G = K p.
+    // G's boundary columns are a sparse loop over K's blocks (K has few
+    // nonzero blocks per row), its interior columns and p^T G are matrix
+    // products by BLAS on scalar matrices: row a of fine node k is row
+    // dim k + a, column b of coarse node J is column dim J + b. BLAS is
+    // column-major, so a row-major matrix is passed as its transpose.
+    // Rows of G: the interior fine nodes first (by interior index), then
+    // the boundary ones (by boundary rank, psi_dense's rows); rows of fine
+    // nodes not in @p nodes stay zero.
+    const std::size_t                      cols = dim * r;
+    thread_local std::vector<unsigned int> row;
+    row.resize(m);
+    const unsigned int n_rows = coarse_grid.n_fine();
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        const int interior = coarse_grid.interior_index(nodes[i]);
+        row[i] =
+          interior >= 0 ? interior : n_interior + boundary_rank[nodes[i]];
+      }
+
+    // the interior rows of p, dim n_interior x cols
+    thread_local std::vector<double> p_interior;
+    p_interior.resize(dim * n_interior * cols);
+    for (unsigned int i = 0; i < n_interior; ++i)
+      for (unsigned int J = 0; J < r; ++J)
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            p_interior[(dim * i + a) * cols + dim * J + b] = p[i * r + J][a][b];
+
+    // K's columns of the interior nodes (dim n_rows x dim n_interior), and
+    // G += K_kl psi_lJ for the boundary nodes l. One fine node's rows of G
+    // at a time, summed in a block-major buffer (coarse node, a, b) that
+    // stays in the L1 cache: each psi entry is then one contiguous update
+    // of dim x dim values.
+    thread_local std::vector<double> K_interior;
+    thread_local std::vector<double> G;
+    thread_local std::vector<double> G_node;
+    K_interior.assign(dim * n_rows * dim * n_interior, 0.);
+    G.assign(dim * n_rows * cols, 0.);
     thread_local std::vector<std::array<unsigned int, dim>> index;
-    G.assign(m * r, Tensor<2, dim>());
     index.resize(m);
     for (unsigned int i = 0; i < m; ++i)
       index[i] = coarse_grid.fine_multi_index(nodes[i]);
-    // G_i += K p_j, where p_j is psi_j I on boundary rows
-    const auto add_product =
-      [&](const Tensor<2, dim> &K, const unsigned int i, const unsigned int j) {
-        Tensor<2, dim> *G_i      = &G[i * r];
-        const int       interior = coarse_grid.interior_index(nodes[j]);
-        if (interior < 0)
-          for (const auto &[J, weight] : psi.row(nodes[j]))
-            G_i[J] += weight * K;
-        else
-          for (unsigned int J = 0; J < r; ++J)
-            G_i[J] += K * p[interior * r + J];
-      };
-    for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = i; j < m; ++j)
-        {
-          bool couples = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            couples = couples && std::abs(static_cast<int>(index[i][d]) -
-                                          static_cast<int>(index[j][d])) <= 2;
-          if (!couples)
-            continue;
-          const Tensor<2, dim> &K_ij = upper[i * m + j];
-          add_product(K_ij, i, j);
-          if (j != i)
-            add_product(transpose(K_ij), j, i);
-        }
-
-    // coarse = p^T G
-    coarse.assign(r * r, Tensor<2, dim>());
+    constexpr unsigned int block = dim * dim;
     for (unsigned int i = 0; i < m; ++i)
       {
-        const Tensor<2, dim> *G_i      = &G[i * r];
-        const int             interior = coarse_grid.interior_index(nodes[i]);
-        if (interior < 0)
-          for (const auto &[I, weight] : psi.row(nodes[i]))
+        G_node.assign(r * block, 0.);
+        double *K_row = &K_interior[dim * row[i] * dim * n_interior];
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            // blocks of fine nodes more than two apart are zero
+            bool couples = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              couples = couples && std::abs(static_cast<int>(index[i][d]) -
+                                            static_cast<int>(index[j][d])) <= 2;
+            if (!couples)
+              continue;
+            // K_ij from the upper blocks (K symmetric)
+            const Tensor<2, dim> K_ij =
+              i <= j ? upper[i * m + j] : transpose(upper[j * m + i]);
+            if (row[j] < n_interior)
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  K_row[a * dim * n_interior + dim * row[j] + b] = K_ij[a][b];
+            else
+              {
+                double K[block];
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int b = 0; b < dim; ++b)
+                    K[a * dim + b] = K_ij[a][b];
+                for (const auto &[J, weight] : psi.row(nodes[j]))
+                  {
+                    double *G_J = &G_node[J * block];
+                    for (unsigned int c = 0; c < block; ++c)
+                      G_J[c] += weight * K[c];
+                  }
+              }
+          }
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            double *G_row = &G[(dim * row[i] + a) * cols];
             for (unsigned int J = 0; J < r; ++J)
-              coarse[I * r + J] += weight * G_i[J];
-        else
-          for (unsigned int I = 0; I < r; ++I)
-            {
-              const Tensor<2, dim> p_iI_T = transpose(p[interior * r + I]);
-              for (unsigned int J = 0; J < r; ++J)
-                coarse[I * r + J] += p_iI_T * G_i[J];
-            }
+              for (unsigned int b = 0; b < dim; ++b)
+                G_row[dim * J + b] = G_node[J * block + a * dim + b];
+          }
       }
-    // p^T K p is symmetric; make it so to the last bit, as the assembled
-    // Hessian of the other terms is
+
+    // G += K_interior p_interior, i.e. G^T += p_interior^T K_interior^T
+    const types::blas_int n_cols = cols, n_g_rows = dim * n_rows,
+                          n_inner = dim * n_interior;
+    // (BLAS wants leading dimensions >= 1: an element type without
+    // interior fine nodes skips the products of the interior rows)
+    const double                     one = 1.;
+    thread_local std::vector<double> C;
+    C.assign(cols * cols, 0.);
+    if (n_interior > 0)
+      {
+        gemm("N",
+             "N",
+             &n_cols,
+             &n_g_rows,
+             &n_inner,
+             &one,
+             p_interior.data(),
+             &n_cols,
+             K_interior.data(),
+             &n_inner,
+             &one,
+             G.data(),
+             &n_cols);
+        // coarse = p^T G: the interior rows of G (the first dim
+        // n_interior), coarse^T = G_interior^T p_interior, ...
+        gemm("N",
+             "T",
+             &n_cols,
+             &n_cols,
+             &n_inner,
+             &one,
+             G.data(),
+             &n_cols,
+             p_interior.data(),
+             &n_cols,
+             &one,
+             C.data(),
+             &n_cols);
+      }
+    // ... and coarse_(I a),. += sum_k psi_kI G_(k a),. over the boundary
+    // rows, for each component a: rows dim k + a of G and dim I + a of
+    // coarse, both strided by dim rows
+    const types::blas_int n_boundary = n_rows - n_interior, n_coarse = r,
+                          stride = dim * cols;
+    for (unsigned int a = 0; a < dim; ++a)
+      gemm("N",
+           "T",
+           &n_cols,
+           &n_coarse,
+           &n_boundary,
+           &one,
+           &G[(dim * n_interior + a) * cols],
+           &stride,
+           psi_dense.data(),
+           &n_coarse,
+           &one,
+           &C[a * cols],
+           &stride);
+
+    // p^T K p is symmetric; make it so to the last bit (the upper blocks
+    // mirrored), as the assembled Hessian of the other terms is
+    coarse.resize(r * r);
     for (unsigned int I = 0; I < r; ++I)
-      for (unsigned int J = I + 1; J < r; ++J)
-        coarse[J * r + I] = transpose(coarse[I * r + J]);
+      for (unsigned int J = I; J < r; ++J)
+        {
+          Tensor<2, dim> &block = coarse[I * r + J];
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              block[a][b] = C[(dim * I + a) * cols + dim * J + b];
+          coarse[J * r + I] = transpose(block);
+        }
   }
 
 

@@ -6,6 +6,9 @@
 #include <bfemp/solver/dof_space.h>
 #include <bfemp/solver/energy_term.h>
 
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
 namespace bfemp
 {
   /**
@@ -81,6 +84,23 @@ namespace bfemp
     double                         dt             = 0.;
     double                         gravity_weight = 0.;
     Tensor<1, dim>                 gravity;
+
+    /** Assembles the consistent mass into @p hessian (one p^T M p per
+     *  element). */
+    void
+    assemble_mass(SparseMatrix<double> &hessian) const;
+
+    /**
+     * The consistent mass depends on the particles' positions at t^n and
+     * the step's control matrices only, not on u: it is assembled once per
+     * reinit() into a matrix of its own couplings and added to every Newton
+     * iteration's Hessian, which saves one condensation per element and
+     * iteration. Its own pattern keeps it valid when contact rebuilds the
+     * Hessian's.
+     */
+    mutable SparsityPattern      mass_pattern;
+    mutable SparseMatrix<double> mass_matrix;
+    mutable bool                 mass_assembled = false;
   };
 } // namespace bfemp
 

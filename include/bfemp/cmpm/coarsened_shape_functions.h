@@ -181,6 +181,13 @@ namespace bfemp
     std::vector<double> bound;
     /** The largest absolute row sum of psi over the boundary fine nodes. */
     double boundary_bound = 0.;
+    /** Rank of each fine node among the boundary fine nodes, -1 for an
+     *  interior one: the row of psi_dense. */
+    std::vector<int> boundary_rank;
+    /** psi_kI of the boundary fine nodes as a dense row-major matrix (one
+     *  row per boundary rank, r columns): the operand of condense()'s
+     *  matrix products. The same for every element. */
+    std::vector<double> psi_dense;
 
     /** Builds element @p element's control and bound from its particles. */
     void
