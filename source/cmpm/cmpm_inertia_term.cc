@@ -3,6 +3,8 @@
 #include <bfemp/particles/particle_layout.h>
 #include <bfemp/solver/node_sparsity.h>
 
+#include <deal.II/lac/sparsity_pattern.h>
+
 #include <algorithm>
 
 namespace bfemp
@@ -162,35 +164,41 @@ namespace bfemp
       {
         NodeSparsity couplings(dofs.n_nodes());
         add_couplings(couplings);
-        mass_matrix.clear();
-        couplings.build(dim, mass_pattern);
-        mass_matrix.reinit(mass_pattern);
-        assemble_mass(mass_matrix);
+        SparsityPattern      pattern;
+        SparseMatrix<double> mass;
+        couplings.build(dim, pattern);
+        mass.reinit(pattern);
+        assemble_mass(mass);
+        // by rows, columns ascending (deal.II stores the diagonal first)
+        mass_row_start.assign(1, 0);
+        mass_columns.clear();
+        mass_values.clear();
+        for (unsigned int row = 0; row < mass.m(); ++row)
+          {
+            const std::size_t first = mass_columns.size();
+            for (auto entry = mass.begin(row); entry != mass.end(row); ++entry)
+              {
+                mass_columns.push_back(entry->column());
+                mass_values.push_back(entry->value());
+              }
+            for (std::size_t k = first + 1;
+                 k < mass_columns.size() && mass_columns[k] < row;
+                 ++k)
+              {
+                std::swap(mass_columns[k - 1], mass_columns[k]);
+                std::swap(mass_values[k - 1], mass_values[k]);
+              }
+            mass_row_start.push_back(mass_columns.size());
+          }
         mass_assembled = true;
       }
-    // Row by row, columns ascending (deal.II stores the diagonal first),
-    // so that each row of the Hessian is walked once.
-    thread_local std::vector<types::global_dof_index> columns;
-    thread_local std::vector<double>                  values;
-    for (unsigned int row = 0; row < mass_matrix.m(); ++row)
-      {
-        columns.clear();
-        values.clear();
-        for (auto entry = mass_matrix.begin(row); entry != mass_matrix.end(row);
-             ++entry)
-          {
-            columns.push_back(entry->column());
-            values.push_back(entry->value());
-          }
-        // move the diagonal from the front to its place
-        for (std::size_t k = 1; k < columns.size() && columns[k] < row; ++k)
-          {
-            std::swap(columns[k - 1], columns[k]);
-            std::swap(values[k - 1], values[k]);
-          }
-        hessian
-          .add(row, columns.size(), columns.data(), values.data(), false, true);
-      }
+    for (unsigned int row = 0; row + 1 < mass_row_start.size(); ++row)
+      hessian.add(row,
+                  mass_row_start[row + 1] - mass_row_start[row],
+                  &mass_columns[mass_row_start[row]],
+                  &mass_values[mass_row_start[row]],
+                  false,
+                  true);
   }
 
 

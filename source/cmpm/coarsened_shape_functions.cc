@@ -443,42 +443,41 @@ namespace bfemp
     // G += K_interior p_interior, i.e. G^T += p_interior^T K_interior^T
     const types::blas_int n_cols = cols, n_g_rows = dim * n_rows,
                           n_inner = dim * n_interior;
-    // (BLAS wants leading dimensions >= 1: an element type without
-    // interior fine nodes skips the products of the interior rows)
+    // ('cmpm/fine nodes per direction' >= 5: at least one interior fine
+    // node, so BLAS's leading dimensions are >= 1)
+    Assert(n_interior > 0, ExcInternalError());
     const double                     one = 1.;
     thread_local std::vector<double> C;
-    C.assign(cols * cols, 0.);
-    if (n_interior > 0)
-      {
-        gemm("N",
-             "N",
-             &n_cols,
-             &n_g_rows,
-             &n_inner,
-             &one,
-             p_interior.data(),
-             &n_cols,
-             K_interior.data(),
-             &n_inner,
-             &one,
-             G.data(),
-             &n_cols);
-        // coarse = p^T G: the interior rows of G (the first dim
-        // n_interior), coarse^T = G_interior^T p_interior, ...
-        gemm("N",
-             "T",
-             &n_cols,
-             &n_cols,
-             &n_inner,
-             &one,
-             G.data(),
-             &n_cols,
-             p_interior.data(),
-             &n_cols,
-             &one,
-             C.data(),
-             &n_cols);
-      }
+    C.resize(cols * cols);
+    gemm("N",
+         "N",
+         &n_cols,
+         &n_g_rows,
+         &n_inner,
+         &one,
+         p_interior.data(),
+         &n_cols,
+         K_interior.data(),
+         &n_inner,
+         &one,
+         G.data(),
+         &n_cols);
+    // coarse = p^T G: the interior rows of G (the first dim n_interior),
+    // coarse^T = G_interior^T p_interior, ...
+    const double zero = 0.;
+    gemm("N",
+         "T",
+         &n_cols,
+         &n_cols,
+         &n_inner,
+         &one,
+         G.data(),
+         &n_cols,
+         p_interior.data(),
+         &n_cols,
+         &zero,
+         C.data(),
+         &n_cols);
     // ... and coarse_(I a),. += sum_k psi_kI G_(k a),. over the boundary
     // rows, for each component a: rows dim k + a of G and dim I + a of
     // coarse, both strided by dim rows

@@ -7,7 +7,8 @@
 #include <bfemp/solver/energy_term.h>
 
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
+
+#include <vector>
 
 namespace bfemp
 {
@@ -93,14 +94,17 @@ namespace bfemp
     /**
      * The consistent mass depends on the particles' positions at t^n and
      * the step's control matrices only, not on u: it is assembled once per
-     * reinit() into a matrix of its own couplings and added to every Newton
-     * iteration's Hessian, which saves one condensation per element and
-     * iteration. Its own pattern keeps it valid when contact rebuilds the
-     * Hessian's.
+     * reinit() over its own couplings and added to every Newton iteration's
+     * Hessian, which saves one condensation per element and iteration. It
+     * is kept by rows with the columns ascending (mass_row_start indexes
+     * mass_columns and mass_values), the form in which a row is added to
+     * the Hessian in one walk; having its own couplings keeps it valid when
+     * contact rebuilds the Hessian's pattern.
      */
-    mutable SparsityPattern      mass_pattern;
-    mutable SparseMatrix<double> mass_matrix;
-    mutable bool                 mass_assembled = false;
+    mutable std::vector<std::size_t>             mass_row_start;
+    mutable std::vector<types::global_dof_index> mass_columns;
+    mutable std::vector<double>                  mass_values;
+    mutable bool                                 mass_assembled = false;
   };
 } // namespace bfemp
 
