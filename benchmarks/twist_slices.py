@@ -16,10 +16,11 @@ states checked against the baseline's.
 
 --start T (> 0) slices the run at t = T instead of t = 0, for the twist
 phase (T = 1: the shell has pressed 0.5 m and starts to turn). The state at
-T comes from one run of the scene to T (variant "material_loose" on two
-threads; every variant of the slice starts from the same state), whose
-folder with its checkpoint is kept in <build>/twist_slices/ and reused; an
-interrupted run to T continues from its last checkpoint when started again.
+T comes from one run of the scene to T (variant
+"material_loose_reuse_ew_threads2"; every variant of the slice starts from
+the same state), whose folder with its checkpoint is kept in
+<build>/twist_slices/ and reused; an interrupted run to T continues from
+its last checkpoint when started again.
 
 --scene is a file name in prm/experiments/6_7_twist/ without .prm
 (twist_mu0_2: the paper's resolution, 110592 particles, about 30 s per step
@@ -49,8 +50,10 @@ SCENES = os.path.join(ROOT, "prm", "experiments", "6_7_twist")
 # a machine with other load too. "baseline" is the scene with the paper's
 # Newton (Algorithm 1 as written, the increment over the unknowns).
 # No variant inherits the scene's own 'factorization reuse' unless it names it.
-PAPER = {"Newton increment": "unknowns", "factorization reuse": "0"}
-MATERIAL = {"Newton increment": "material points", "factorization reuse": "0"}
+PAPER = {"Newton increment": "unknowns", "factorization reuse": "0",
+         "forcing term": "none", "Hessian projection": "when indefinite"}
+MATERIAL = {"Newton increment": "material points", "factorization reuse": "0",
+            "forcing term": "none", "Hessian projection": "when indefinite"}
 VARIANTS = {
     "baseline": {"contact": {"friction pass tolerance factor": "1"},
                  "solver": PAPER},
@@ -73,6 +76,17 @@ VARIANTS = {
     "material_loose_reuse_threads2": {
         "contact": {"friction pass tolerance factor": "100"},
         "solver": dict(MATERIAL, **{"factorization reuse": "10"}),
+        "run": {"threads": "2"}},
+    "material_loose_reuse_ew_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "10",
+                                    "forcing term": "Eisenstat-Walker"}),
+        "run": {"threads": "2"}},
+    "material_loose_reuse_ew_projected_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "10",
+                                    "forcing term": "Eisenstat-Walker",
+                                    "Hessian projection": "always"}),
         "run": {"threads": "2"}},
 }
 TIMES = ["assembly_time", "factorization_time", "solve_time",
@@ -108,8 +122,9 @@ def run_to_start(binary, build, scene, start):
     if os.path.exists(done):
         return os.path.join(folder, "prefix")
     os.makedirs(folder, exist_ok=True)
-    changes = dict(VARIANTS["material_loose"])
-    changes["run"] = {"threads": "2"}
+    # the fastest variant: the start state is the same for every variant,
+    # and differs from any other variant's by the Newton tolerance
+    changes = dict(VARIANTS["material_loose_reuse_ew_threads2"])
     changes["checkpoint"] = {"interval": f"{start:g}",
                              "wall time interval": "600", "resume": "auto"}
     path = write_prm(folder, scene, "prefix", start, changes)
@@ -149,6 +164,7 @@ def run(binary, folder, scene, name, steps, changes, start=0., prefix=None):
         "steps": len(rows),
         "Newton iterations": sum(int(r["newton_iterations"]) for r in rows),
         "friction updates": sum(int(r["friction_updates"]) for r in rows),
+        "factorizations": sum(int(r["factorizations"]) for r in rows),
         "particles inside the shell (max)": max(
             int(float(r["particles_in_fem"])) for r in rows),
         "Newton iterations per step": [int(r["newton_iterations"])

@@ -656,7 +656,6 @@ namespace bfemp
         if (with_friction)
           friction->update(u);
         potential.setup_system();
-        newton.forget_factorization();
         minimize_with_friction(u,
                                dt,
                                "step " + std::to_string(step_number) +

@@ -7,6 +7,10 @@ namespace bfemp
   DofSpace<dim>::reinit(const std::vector<unsigned int> &fem_nodes_per_body,
                         const std::vector<double>       &grid_mass)
   {
+    const std::vector<unsigned int> old_fem_offsets = std::move(fem_offsets);
+    const std::vector<std::size_t>  old_grid_to_lattice =
+      std::move(grid_to_lattice);
+    const unsigned int old_n_fem = n_fem;
     fem_offsets.clear();
     n_fem = 0;
     for (const unsigned int n : fem_nodes_per_body)
@@ -24,6 +28,9 @@ namespace bfemp
         }
     constraint_list.clear();
     node_constraint.assign(n_nodes(), invalid);
+    if (n_fem != old_n_fem || fem_offsets != old_fem_offsets ||
+        grid_to_lattice != old_grid_to_lattice)
+      ++numbering_revision;
   }
 
 

@@ -5,7 +5,10 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -37,6 +40,14 @@ namespace bfemp
 
   namespace
   {
+    /**
+     * Relative CG residual at which a direction counts as the exact Newton
+     * step: with it, factorization reuse ends the reduced twist's steps
+     * within 1e-14 m of factorizing every iteration
+     * (experiments/twist_newton_levers).
+     */
+    constexpr double exact_forcing = 1e-8;
+
     /**
      * The rigid translations of the unified DoF space (component c of every
      * node), the near-null space that lets AMG coarsen a vector problem
@@ -214,6 +225,7 @@ namespace bfemp
     Vector<double> response(u.size());
     solver->factorize(hessian);
     factorization_reusable = true;
+    factorized_numbering   = potential.dof_space().numbering();
     solver->solve(coupling, response);
     potential.dof_space().project(response);
     if (!std::isfinite(response.linfty_norm()))
@@ -224,10 +236,66 @@ namespace bfemp
 
 
   template <int dim>
+  void
+  NewtonSolver<dim>::log_iteration(const std::string      &step_label,
+                                   const NewtonStatistics &statistics,
+                                   const double            stop_at,
+                                   const double            step,
+                                   const double            energy,
+                                   const double            gradient_norm,
+                                   const double            forcing,
+                                   const bool              factorized) const
+  {
+    std::ostringstream line;
+    line << std::setprecision(3) << "  " << step_label << ": iteration "
+         << statistics.iterations << ", ||p||/dt " << statistics.residual
+         << " m/s (stop " << stop_at << "), step " << step << ", backtracks "
+         << statistics.backtracks << ", E " << std::setprecision(10) << energy
+         << std::setprecision(3) << " J, ||g|| " << gradient_norm << ", "
+         << (factorized ? "factorized" : "CG with an older factorization");
+    if (!factorized)
+      line << " to eta " << forcing;
+    std::cout << line.str() << std::endl;
+  }
+
+
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::forcing(const double gradient_norm, const bool first) const
+  {
+    if (parameters.forcing_term == "none")
+      return exact_forcing;
+    // Eisenstat and Walker (1996), choice 2 with gamma = 0.9, alpha = 2:
+    // eta_k follows the gradient's decrease, so the linear solve is as
+    // accurate as the quadratic model is at this distance from the
+    // minimizer. Their eta_max (0.9, for GMRES with a weak preconditioner)
+    // is far too loose for IPC contact: on the full-resolution twist an
+    // eta of 0.1 or 1e-2 cost as many Newton iterations (backtracks at the
+    // friction's stick-slip kink) as factorizations it saved, 1e-3 and
+    // 1e-4 saved 15 % of the wall time. Below 0.1 their safeguard (eta_k
+    // >= gamma eta_k-1^2 where that exceeds 0.1) never acts.
+    constexpr double gamma = 0.9, eta_max = 1e-3;
+    double           eta = eta_max;
+    if (!first && last_gradient_norm > 0.)
+      {
+        const double ratio = gradient_norm / last_gradient_norm;
+        eta                = gamma * ratio * ratio;
+      }
+    eta                = std::clamp(eta, exact_forcing, eta_max);
+    last_gradient_norm = gradient_norm;
+    return eta;
+  }
+
+
+
+  template <int dim>
   bool
   NewtonSolver<dim>::solve_with_last_factorization(
     const SparseMatrix<double> &hessian,
     const Vector<double>       &minus_gradient,
+    const double                relative_tolerance,
+    const bool                  warm_start,
     Vector<double>             &direction) const
   {
     // Within a step the Hessian changes little from one iteration to the
@@ -244,11 +312,12 @@ namespace bfemp
       }
     };
     SolverControl            control(parameters.factorization_reuse,
-                          1e-8 * minus_gradient.l2_norm(),
+                          relative_tolerance * minus_gradient.l2_norm(),
                           false,
                           false);
     SolverCG<Vector<double>> cg(control);
-    direction.reinit(minus_gradient.size());
+    if (!warm_start)
+      direction.reinit(minus_gradient.size());
     try
       {
         cg.solve(hessian,
@@ -271,6 +340,7 @@ namespace bfemp
                                       const Vector<double>      &u,
                                       const Vector<double>      &minus_gradient,
                                       const HessianKind          kind,
+                                      const InexactSolve        &inexact,
                                       Vector<double>            &direction,
                                       NewtonStatistics &statistics) const
   {
@@ -282,12 +352,30 @@ namespace bfemp
     // the linear solver on it hands the iteration to the projected one.
     try
       {
-        if (parameters.factorization_reuse > 0 && factorization_reusable)
+        if (parameters.factorization_reuse > 0 && factorization_reusable &&
+            factorized_numbering == potential.dof_space().numbering())
           {
             timer.restart();
-            const bool solved =
-              solve_with_last_factorization(hessian, minus_gradient, direction);
+            bool solved = solve_with_last_factorization(hessian,
+                                                        minus_gradient,
+                                                        inexact.forcing,
+                                                        false,
+                                                        direction);
             potential.dof_space().project(direction);
+            // CG from p = 0 underestimates |p| (its iterates grow in the
+            // preconditioner's norm): a loose direction that would pass the
+            // stopping test is solved on to an exact step first.
+            if (solved && inexact.forcing > exact_forcing &&
+                potential.increment_norm(direction) / inexact.dt <
+                  inexact.exact_below)
+              {
+                solved = solve_with_last_factorization(hessian,
+                                                       minus_gradient,
+                                                       exact_forcing,
+                                                       true,
+                                                       direction);
+                potential.dof_space().project(direction);
+              }
             statistics.solve_time += timer.wall_time();
             // CG on an indefinite matrix need not descend: then the
             // factorization below decides.
@@ -303,6 +391,7 @@ namespace bfemp
           factorized = solver->factorize_if_positive_definite(hessian);
         statistics.factorization_time += timer.wall_time();
         factorization_reusable = factorized;
+        factorized_numbering   = potential.dof_space().numbering();
         if (!factorized)
           return false;
         timer.restart();
@@ -389,6 +478,11 @@ namespace bfemp
         potential.gradient(u, gradient);
         gradient *= -1.;
         statistics.assembly_time += timer.wall_time();
+        const unsigned int factorizations_before = statistics.factorizations;
+        const InexactSolve inexact{forcing(gradient.l2_norm(),
+                                           statistics.iterations == 1),
+                                   stop_at,
+                                   dt};
         // The projection keeps every local Hessian PSD but drops curvature
         // where it acts (the rotation mode of a compressed neo-Hookean
         // particle or element, a contact distance's curvature): Newton then
@@ -399,6 +493,7 @@ namespace bfemp
                                             u,
                                             gradient,
                                             HessianKind::exact,
+                                            inexact,
                                             direction,
                                             statistics);
         if (!exact)
@@ -407,6 +502,7 @@ namespace bfemp
                              u,
                              gradient,
                              HessianKind::projected,
+                             inexact,
                              direction,
                              statistics);
             ++statistics.projected_hessians;
@@ -449,6 +545,15 @@ namespace bfemp
                    std::to_string(statistics.minimum_distance) +
                    " <= 0 (invariant check)");
           }
+        if (parameters.log_iterations)
+          log_iteration(step_label,
+                        statistics,
+                        stop_at,
+                        step,
+                        energy,
+                        gradient.l2_norm(),
+                        inexact.forcing,
+                        statistics.factorizations > factorizations_before);
         if (statistics.residual < stop_at && progress == 1.)
           break;
         if (step == 0. && !(statistics.residual < stop_at))

@@ -85,11 +85,36 @@ namespace bfemp
       Patterns::Integer(0),
       "[-] With CHOLMOD or UMFPACK: before factorizing a Newton iteration's "
       "Hessian, try conjugate gradients preconditioned by the last "
-      "factorization of the same time step, to a residual of 1e-8 times "
-      "||g||, for at most this many iterations; factorize only if they do "
-      "not reach it (or the direction does not descend). 0: factorize "
-      "every iteration, as the paper does. Must be 0 with CG AMG, which "
-      "has no factorization.");
+      "factorization (kept across time steps while the unknowns are "
+      "numbered the same), to the residual that 'forcing term' sets, for "
+      "at most this many iterations; factorize only if they do not reach "
+      "it (or the direction does not descend). 0: factorize every "
+      "iteration, as the paper does. Must be 0 with CG AMG, which has no "
+      "factorization.");
+    prm.declare_entry(
+      "forcing term",
+      "none",
+      Patterns::Selection("none|Eisenstat-Walker"),
+      "[-] How accurately the conjugate gradients of 'factorization reuse' "
+      "solve H p = -g. none: to a residual of 1e-8 ||g||, an exact Newton "
+      "step. Eisenstat-Walker: inexact Newton, to eta_k ||g_k|| with "
+      "eta_k = 0.9 (||g_k|| / ||g_k-1||)^2 (Eisenstat and Walker 1996, "
+      "choice 2), at most 1e-3: loose while Newton is far from the "
+      "minimizer, so that an older factorization still serves, and "
+      "tightening as it converges. A direction that passes the "
+      "stopping test is solved again to 1e-8 ||g|| before Newton stops, so "
+      "the test decides on the exact step as with none. Needs 'factorization "
+      "reuse' > 0.");
+    prm.declare_entry("log iterations",
+                      "false",
+                      Patterns::Bool(),
+                      "[-] Print one line per Newton iteration (also with "
+                      "'run/quiet'): ||p|| / dt against the pass's stopping "
+                      "tolerance, the accepted step length, the line search's "
+                      "backtracks, E, ||g||, the forcing term and whether the "
+                      "direction came from a new factorization or from CG "
+                      "with an older one. For finding out where a scene's "
+                      "Newton iterations go.");
     prm.declare_entry("check invariants",
                       "false",
                       Patterns::Bool(),
@@ -114,8 +139,10 @@ namespace bfemp
     step_bound_fraction       = prm.get_double("step bound fraction");
     maximum_backtracks        = prm.get_integer("maximum backtracks");
     check_invariants          = prm.get_bool("check invariants");
+    log_iterations            = prm.get_bool("log iterations");
     newton_increment          = prm.get("Newton increment");
     factorization_reuse       = prm.get_integer("factorization reuse");
+    forcing_term              = prm.get("forcing term");
     prm.leave_subsection();
 
     require_input(newton_tolerance > 0.,
@@ -134,6 +161,13 @@ namespace bfemp
                   std::to_string(factorization_reuse),
                   "must be 0 with 'linear solver' = CG AMG (it has no "
                   "factorization to reuse)");
+    require_input(forcing_term == "none" || factorization_reuse > 0,
+                  "solver",
+                  "forcing term",
+                  forcing_term,
+                  "must be none with 'factorization reuse' = 0 (the forcing "
+                  "term sets the accuracy of the conjugate gradients that "
+                  "reuse a factorization; a factorization solves exactly)");
     require_input(armijo_constant >= 0. && armijo_constant < 0.5,
                   "solver",
                   "Armijo constant",

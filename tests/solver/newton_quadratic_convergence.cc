@@ -27,6 +27,8 @@
 #include <bfemp/solver/solver_parameters.h>
 
 #include <iostream>
+#include <sstream>
+#include <string>
 
 #include "solver_test_scene.h"
 
@@ -161,10 +163,28 @@ namespace
     parameters.newton_tolerance = tolerance;
     parameters.linear_solver    = "CHOLMOD";
     parameters.check_invariants = true;
+    parameters.log_iterations   = true;
     NewtonSolver<dim>      newton(parameters);
     Vector<double>         u_solver(scene.dofs.n_dofs());
+    std::stringstream      log;
+    std::streambuf        *console = std::cout.rdbuf(log.rdbuf());
     const NewtonStatistics statistics =
       newton.minimize(scene.potential, u_solver, 1., "static bar");
+    std::cout.rdbuf(console);
+    std::cout << log.str();
+    // 'solver/log iterations': one line per iteration, each from a new
+    // factorization (no reuse here)
+    unsigned int n_lines = 0, n_factorized = 0;
+    for (std::string line; std::getline(log, line);)
+      if (line.rfind("  static bar: iteration ", 0) == 0)
+        {
+          ++n_lines;
+          n_factorized += line.find(", factorized") != std::string::npos;
+        }
+    check(n_lines == statistics.iterations && n_factorized == n_lines,
+          what + "the iteration log has one line per Newton iteration (" +
+            std::to_string(n_lines) + "), each from a factorization (" +
+            std::to_string(n_factorized) + ")");
     Vector<double> difference(u_solver);
     difference -= u;
     std::cout << what << "NewtonSolver: " << statistics.iterations

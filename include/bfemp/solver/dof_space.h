@@ -41,11 +41,24 @@ namespace bfemp
     /**
      * Numbers the FEM nodes of bodies with @p fem_nodes_per_body nodes, then
      * the lattice nodes with @p grid_mass > 0 (empty for scenes without MPM
-     * bodies). Removes all constraints.
+     * bodies). Removes all constraints. numbering() changes only if the
+     * numbering does.
      */
     void
     reinit(const std::vector<unsigned int> &fem_nodes_per_body,
            const std::vector<double>       &grid_mass);
+
+    /**
+     * Changes whenever reinit() numbers the nodes differently from before:
+     * vectors and matrices built for one value are valid for another call
+     * of reinit() with the same value (a factorization kept as a
+     * preconditioner across time steps, say).
+     */
+    unsigned int
+    numbering() const
+    {
+      return numbering_revision;
+    }
 
     unsigned int
     n_nodes() const
@@ -136,7 +149,8 @@ namespace bfemp
     }
 
   private:
-    unsigned int              n_fem = 0;
+    unsigned int              n_fem              = 0;
+    unsigned int              numbering_revision = 0;
     std::vector<unsigned int> fem_offsets;
     std::vector<unsigned int> lattice_to_node;
     std::vector<std::size_t>  grid_to_lattice;

@@ -69,6 +69,22 @@ namespace bfemp
    * ||p|| = ||p||_inf or the measure of IncrementalPotential::
    * increment_norm() ('solver/Newton increment').
    */
+  /**
+   * What newton_direction() needs of an inexact Newton step: the relative
+   * CG residual of the reuse path, and when to solve exactly anyway.
+   */
+  struct InexactSolve
+  {
+    /** eta_k: relative residual of CG with the last factorization. */
+    double forcing = 1e-8;
+    /** A direction with increment_norm(p) / dt below this is solved to
+     *  1e-8 before it is returned (the stopping test's threshold). */
+    double exact_below = 0.;
+    double dt          = 1.;
+  };
+
+
+
   template <int dim>
   class NewtonSolver
   {
@@ -98,16 +114,6 @@ namespace bfemp
     const LinearSolver &
     linear_solver() const;
 
-    /**
-     * Drops the factorization that `solver/factorization reuse` would use
-     * next: the unknowns are numbered anew at every time step.
-     */
-    void
-    forget_factorization()
-    {
-      factorization_reusable = false;
-    }
-
     /** eps_d, 'solver/Newton tolerance' [m/s]. */
     double
     tolerance() const
@@ -127,8 +133,29 @@ namespace bfemp
                      const Vector<double>      &u,
                      const Vector<double>      &minus_gradient,
                      const HessianKind          kind,
+                     const InexactSolve        &inexact,
                      Vector<double>            &direction,
                      NewtonStatistics          &statistics) const;
+
+    /**
+     * The relative CG residual eta_k of `solver/forcing term` for the
+     * gradient norm @p gradient_norm of the current iteration (@p first:
+     * the first of a minimize() call); 1e-8 with 'none'.
+     */
+    double
+    forcing(const double gradient_norm, const bool first) const;
+
+    /** `solver/log iterations`: one line on stdout for the iteration just
+     *  done (@p factorized: its direction came from a new factorization). */
+    void
+    log_iteration(const std::string      &step_label,
+                  const NewtonStatistics &statistics,
+                  const double            stop_at,
+                  const double            step,
+                  const double            energy,
+                  const double            gradient_norm,
+                  const double            forcing,
+                  const bool              factorized) const;
 
     /**
      * Moves the constrained components of @p u towards their targets and
@@ -175,18 +202,26 @@ namespace bfemp
     /**
      * `solver/factorization reuse` > 0: solves H p = -g by conjugate
      * gradients preconditioned with the last factorization (of an earlier
-     * Hessian of the step) to 1e-8 relative residual; false if that takes
-     * more than the entry's iterations.
+     * Hessian on the same unknowns) to the relative residual
+     * @p relative_tolerance, from p = 0 or, with @p warm_start, from the
+     * given @p direction; false if that takes more than the entry's
+     * iterations.
      */
     bool
     solve_with_last_factorization(const SparseMatrix<double> &hessian,
                                   const Vector<double>       &minus_gradient,
-                                  Vector<double>             &direction) const;
+                                  const double    relative_tolerance,
+                                  const bool      warm_start,
+                                  Vector<double> &direction) const;
 
     const SolverParameters        parameters;
     std::unique_ptr<LinearSolver> solver;
-    /** Whether the solver holds a factorization of this step's unknowns. */
-    mutable bool factorization_reusable = false;
+    /** Whether the solver holds a factorization, and of which numbering
+     *  of the unknowns (DofSpace::numbering()). */
+    mutable bool         factorization_reusable = false;
+    mutable unsigned int factorized_numbering   = 0;
+    /** Eisenstat-Walker's state: ||g_k-1||. */
+    mutable double last_gradient_norm = 0.;
   };
 } // namespace bfemp
 

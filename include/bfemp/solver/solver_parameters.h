@@ -38,12 +38,17 @@ namespace bfemp
     unsigned int maximum_backtracks = 60;
     /** Assert det F > 0 at every accepted iterate (tests). */
     bool check_invariants = false;
+    /** `solver/log iterations`: one line per Newton iteration. */
+    bool log_iterations = false;
     /** `solver/Newton increment`: "unknowns" (||p||_inf, the paper) or
      *  "material points" (FEM nodes and particles' u_p and h dF_p). */
     std::string newton_increment = "unknowns";
     /** `solver/factorization reuse`: CG iterations preconditioned by the
      *  last factorization before a new one; 0: factorize every iteration. */
     unsigned int factorization_reuse = 0;
+    /** `solver/forcing term`: "none" (CG with the last factorization to
+     *  1e-8 ||g||) or "Eisenstat-Walker" (inexact Newton, to eta_k ||g||). */
+    std::string forcing_term = "none";
 
     static void
     declare_parameters(ParameterHandler &prm);
