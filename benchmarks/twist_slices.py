@@ -82,6 +82,11 @@ VARIANTS = {
         "solver": dict(MATERIAL, **{"factorization reuse": "10",
                                     "forcing term": "Eisenstat-Walker"}),
         "run": {"threads": "2"}},
+    "material_loose_reuse30_ew_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "30",
+                                    "forcing term": "Eisenstat-Walker"}),
+        "run": {"threads": "2"}},
     "material_loose_reuse_ew_projected_threads2": {
         "contact": {"friction pass tolerance factor": "100"},
         "solver": dict(MATERIAL, **{"factorization reuse": "10",
