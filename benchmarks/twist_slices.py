@@ -26,8 +26,10 @@ its last checkpoint when started again.
 (twist_mu0_2: the paper's resolution, 110592 particles, about 30 s per step
 on one thread once in contact; twist_medium_mu0_2: 4096 particles, 2-4 s).
 --baseline-build runs the variant "baseline" also with the bfemp of another
-build folder (e.g. a worktree of an earlier commit built the same way) and
-records it as "baseline (other build)". Writes
+build folder (e.g. a worktree of an earlier commit built the same way; its
+RUNPATH must name its own libbfemp.so, so build it in place rather than copy
+it) and records it as "baseline (other build)"; the ratios are taken against
+it when "baseline" itself is not among the variants. Writes
 benchmarks/results/twist_slices_<scene>.json (see doc/performance.md).
 """
 
@@ -246,10 +248,14 @@ def main():
                     "cpus": os.cpu_count(), "system": platform.platform()},
         "runs": runs,
     }
-    if "baseline" in runs:
-        base = runs["baseline"]
+    # the ratios against the baseline of this build, or else of the other
+    reference = ("baseline" if "baseline" in runs else
+                 "baseline (other build)" if args.baseline_build else None)
+    if reference is not None:
+        record["ratios against"] = reference
+        base = runs[reference]
         for label, r in runs.items():
-            if label == "baseline":
+            if label == reference:
                 continue
             r["wall time / baseline"] = (r["wall time [s]"] /
                                          base["wall time [s]"])

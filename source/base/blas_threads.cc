@@ -88,18 +88,18 @@ namespace bfemp
              ", 1 thread ('run/BLAS threads = auto'; set 'run/threads' on a "
              "machine of your own to use more in large factorizations)";
     return "BLAS: " + name + ", 1 thread, " + std::to_string(thread_limit) +
-           " in factorizations above 1e9 flops ('run/BLAS threads = auto', "
-           "'run/threads')";
+           " in factorizations above 1e9 flops and solves above 1e8 "
+           "('run/BLAS threads = auto', 'run/threads')";
   }
 
 
 
-  BlasThreads::Scope::Scope(const double flops)
+  BlasThreads::Scope::Scope(const double flops, const bool solve)
   {
     if (!controllable() || fixed_threads > 0)
       return;
     previous = openblas().get();
-    if (flops >= parallel_flops)
+    if (flops >= (solve ? parallel_solve_flops : parallel_flops))
       openblas().set(static_cast<int>(thread_limit));
   }
 

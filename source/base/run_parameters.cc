@@ -37,9 +37,9 @@ namespace bfemp
       "auto",
       Patterns::Anything(),
       "[-] Threads of the BLAS (OpenBLAS) inside CHOLMOD's factorization: "
-      "'auto' uses one, and 'threads' in factorizations above 1e9 flops if "
-      "'threads' is set above 1 (the cores are the run's own); a number N "
-      "uses N in every BLAS call. More BLAS threads gain 1.1-1.7 times in "
+      "'auto' uses one, and 'threads' in factorizations above 1e9 flops and "
+      "triangular solves above 1e8 flops if 'threads' is set above 1 (the "
+      "cores are the run's own); a number N uses N in every BLAS call. More BLAS threads gain 1.1-1.7 times in "
       "large factorizations on a quiet machine, but their spinning made a "
       "3D step 9 times slower next to other busy processes "
       "(doc/performance.md).");

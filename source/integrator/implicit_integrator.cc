@@ -5,6 +5,38 @@
 
 namespace bfemp
 {
+  namespace
+  {
+    /** MpmElasticityTerm::begin_step() for a scope (the Newton solve of a
+     *  step), end_step() when it ends, also by an exception. */
+    template <int dim>
+    class StencilsOfStep
+    {
+    public:
+      explicit StencilsOfStep(MpmElasticityTerm<dim> *term)
+        : term(term)
+      {
+        if (term != nullptr)
+          term->begin_step();
+      }
+
+      ~StencilsOfStep()
+      {
+        if (term != nullptr)
+          term->end_step();
+      }
+
+      StencilsOfStep(const StencilsOfStep &) = delete;
+      StencilsOfStep &
+      operator=(const StencilsOfStep &) = delete;
+
+    private:
+      MpmElasticityTerm<dim> *term;
+    };
+  } // namespace
+
+
+
   template <int dim>
   ImplicitIntegrator<dim>::ImplicitIntegrator(
     const BackgroundGrid<dim>                         &grid,
@@ -656,11 +688,16 @@ namespace bfemp
         if (with_friction)
           friction->update(u);
         potential.setup_system();
-        minimize_with_friction(u,
-                               dt,
-                               "step " + std::to_string(step_number) +
-                                 ", t = " + std::to_string(time + dt) +
-                                 (pass > 0 ? ", full-Newton pass" : ""));
+        {
+          // the particles' stencils, fixed during the solve, computed once
+          const StencilsOfStep<dim> stencils(with_mpm ? &mpm_elasticity
+                                                      : nullptr);
+          minimize_with_friction(u,
+                                 dt,
+                                 "step " + std::to_string(step_number) +
+                                   ", t = " + std::to_string(time + dt) +
+                                   (pass > 0 ? ", full-Newton pass" : ""));
+        }
         if (pass + 1 < passes)
           {
             first_pass_statistics = last_statistics;

@@ -253,35 +253,97 @@ namespace bfemp
                                stencils[p].nodes[k]) -
               nodes.begin();
         blocks.assign(nodes.size() * nodes.size(), Tensor<2, dim>());
+        // The particles of a cell share a few distinct stencils (8 of 27
+        // with three particles per direction and quadratic B-splines):
+        // group them, and mark the union node pairs each stencil couples,
+        // the only blocks added to the matrix.
+        coupled.assign(nodes.size() * nodes.size(), 0);
+        n_groups = 0;
+        for (unsigned int p = 0; p < stencils.size(); ++p)
+          {
+            const unsigned int *local = &positions[p * Stencil::max_nodes];
+            const auto same_nodes = [&](const std::vector<unsigned int> &g) {
+              const unsigned int q = g[0];
+              return stencils[q].n == stencils[p].n &&
+                     std::equal(local,
+                                local + stencils[p].n,
+                                &positions[q * Stencil::max_nodes]);
+            };
+            const auto group = std::find_if(groups.begin(),
+                                            groups.begin() + n_groups,
+                                            same_nodes);
+            if (group != groups.begin() + n_groups)
+              {
+                group->push_back(p);
+                continue;
+              }
+            if (groups.size() == n_groups)
+              groups.emplace_back();
+            groups[n_groups].assign(1, p);
+            ++n_groups;
+            for (unsigned int k = 0; k < stencils[p].n; ++k)
+              for (unsigned int l = k; l < stencils[p].n; ++l)
+                coupled[local[k] * nodes.size() + local[l]] = 1;
+          }
+        contractions.resize(stencils.size() * Stencil::max_nodes);
       }
 
-      /** Adds particle @p p's blocks with tangent @p A and weight s V_p^0. */
+      /** Sets particle @p p's tangent @p A and weight s V_p^0: the first
+       *  contractions of its blocks (sum_blocks() adds them). */
       void
       add_particle(const unsigned int    p,
                    const Tensor<4, dim> &A,
                    const double          weight)
       {
-        const Stencil      &s     = stencils[p];
-        const unsigned int *local = &positions[p * Stencil::max_nodes];
-        // the first contraction, shared by all blocks of row node k
-        A_k.resize(s.n);
+        const Stencil &s = stencils[p];
         for (unsigned int k = 0; k < s.n; ++k)
-          A_k[k] = s.first_contraction(k, A, weight);
-        // Stencil nodes are sorted, so k <= l means local[k] <= local[l].
-        for (unsigned int k = 0; k < s.n; ++k)
-          for (unsigned int l = k; l < s.n; ++l)
-            s.add_block(A_k[k], l, blocks[local[k] * nodes.size() + local[l]]);
+          contractions[p * Stencil::max_nodes + k] =
+            s.first_contraction(k, A, weight);
       }
 
-      /** Adds the rows of all union nodes, the lower blocks mirrored.
-       *  Union nodes that no particle couples have zero blocks, which
-       *  SparseMatrix::add accepts outside the pattern. */
+      /**
+       * Sums the blocks of all particles, group by group: each block of a
+       * group's stencil gathers its particles' terms before it is added to
+       * the union's, so that the partial sums stay in registers (the
+       * per-particle loads and stores of the blocks dominated).
+       */
+      void
+      sum_blocks()
+      {
+        const std::size_t m = nodes.size();
+        for (unsigned int g = 0; g < n_groups; ++g)
+          {
+            const std::vector<unsigned int> &members = groups[g];
+            const Stencil                   &s       = stencils[members[0]];
+            const unsigned int              *local =
+              &positions[members[0] * Stencil::max_nodes];
+            // Stencil nodes are sorted, so k <= l means local[k] <= local[l].
+            for (unsigned int k = 0; k < s.n; ++k)
+              for (unsigned int l = k; l < s.n; ++l)
+                {
+                  Tensor<2, dim> block;
+                  for (const unsigned int p : members)
+                    stencils[p].add_block(
+                      contractions[p * Stencil::max_nodes + k],
+                      l,
+                      block);
+                  blocks[local[k] * m + local[l]] += block;
+                }
+          }
+      }
+
+      /** Adds the coupled blocks of the union nodes, the lower ones
+       *  mirrored (union nodes of different stencils need not couple, nor
+       *  be in the pattern together). */
       void
       add_to(SparseMatrix<double> &hessian) const
       {
         const std::size_t m = nodes.size();
         add_node_blocks<dim>(
           nodes,
+          [&](const unsigned int i, const unsigned int j) {
+            return j >= i ? coupled[i * m + j] : coupled[j * m + i];
+          },
           [&](const unsigned int i, const unsigned int j) {
             return j >= i ? blocks[i * m + j] : transpose(blocks[j * m + i]);
           },
@@ -295,22 +357,44 @@ namespace bfemp
       std::vector<unsigned int> positions;
       /** Block (i, j) of union nodes i <= j at i * nodes.size() + j. */
       std::vector<Tensor<2, dim>> blocks;
-      std::vector<Tensor<3, dim>> A_k;
+      /** Whether a stencil couples union nodes i <= j, at i * nodes.size()
+       *  + j. */
+      std::vector<char> coupled;
+      /** The particles of each distinct stencil of the cell (the first
+       *  n_groups entries; the vectors keep their memory). */
+      std::vector<std::vector<unsigned int>> groups;
+      unsigned int                           n_groups = 0;
+      /** The first contraction of particle p's row node k (add_particle). */
+      std::vector<Tensor<3, dim>> contractions;
     };
 
 
 
-    /** Builds the B-spline stencil of a particle. */
+    /** The B-spline stencil of a particle: from the step's cache
+     *  (MpmElasticityTerm::begin_step()), or computed. */
     template <int dim, int degree>
     struct KernelStencilMaker
     {
-      using Stencil = ParticleStencil<dim, degree>;
+      using Stencil = ScalarStencil<dim, KernelStencil<dim, degree>::n_nodes>;
 
       template <typename ParticleAccessor>
       Stencil
       operator()(const ParticleAccessor &particle) const
       {
-        return Stencil(lattice, dofs, particle);
+        if (cache != nullptr)
+          {
+            AssertIndexRange(particle.get_local_index(), cache->size());
+            return (*cache)[particle.get_local_index()];
+          }
+        return kernel_stencil(particle);
+      }
+
+      /** The stencil with its kernel (and key()), computed. */
+      template <typename ParticleAccessor>
+      ParticleStencil<dim, degree>
+      kernel_stencil(const ParticleAccessor &particle) const
+      {
+        return ParticleStencil<dim, degree>(lattice, dofs, particle);
       }
 
       /** The range of Stencil::key(). */
@@ -322,6 +406,8 @@ namespace bfemp
 
       const Lattice<dim>  &lattice;
       const DofSpace<dim> &dofs;
+      /** The stencils by the particles' local index, or nullptr. */
+      const std::vector<Stencil> *cache;
     };
 
 
@@ -362,9 +448,37 @@ namespace bfemp
   MpmElasticityTerm<dim>::with_kernel(const Function &f) const
   {
     return dispatch_kernel_degree(grid.kernel_degree(), [&](auto degree) {
-      return f(
-        KernelStencilMaker<dim, decltype(degree)::value>{grid.lattice(), dofs});
+      using Maker = KernelStencilMaker<dim, decltype(degree)::value>;
+      return f(Maker{grid.lattice(),
+                     dofs,
+                     static_cast<const std::vector<typename Maker::Stencil> *>(
+                       stencil_cache.get())});
     });
+  }
+
+  template <int dim>
+  void
+  MpmElasticityTerm<dim>::begin_step()
+  {
+    stencil_cache.reset();
+    if (cmpm != nullptr)
+      return;
+    with_kernel([&](const auto &make_stencil) {
+      using Stencil = typename std::decay_t<decltype(make_stencil)>::Stencil;
+      auto cache    = std::make_shared<std::vector<Stencil>>(
+        particles.handler().get_max_local_particle_index());
+      particles.for_each([&](const auto &particle) {
+        (*cache)[particle.get_local_index()] = make_stencil(particle);
+      });
+      stencil_cache = cache;
+    });
+  }
+
+  template <int dim>
+  void
+  MpmElasticityTerm<dim>::end_step()
+  {
+    stencil_cache.reset();
   }
 
   template <int dim>
@@ -444,6 +558,7 @@ namespace bfemp
                                          kind == HessianKind::projected),
           scale * s.volume);
       }
+    cell.sum_blocks();
   }
 
   template <int dim>
@@ -467,7 +582,7 @@ namespace bfemp
       // the scattering loop may mark and fill rows without locks.
       std::vector<char> done(make_stencil.n_keys(), 0);
       particles.for_each_scattering([&](const auto &particle) {
-        const auto        s     = make_stencil(particle);
+        const auto        s     = make_stencil.kernel_stencil(particle);
         const std::size_t first = s.key();
         if (done[first])
           return;

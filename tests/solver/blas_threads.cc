@@ -20,11 +20,12 @@ using bfemp_tests::check;
 
 namespace
 {
-  /** Threads inside the scope of a factorization of @p flops. */
+  /** Threads inside the scope of a factorization (or, with @p solve, of
+   *  triangular solves) of @p flops. */
   int
-  inside(const double flops)
+  inside(const double flops, const bool solve = false)
   {
-    const BlasThreads::Scope scope(flops);
+    const BlasThreads::Scope scope(flops, solve);
     return BlasThreads::current();
   }
 
@@ -79,6 +80,12 @@ main()
          inside(1e10),
          1,
          2);
+  // solves: their own threshold (1e8 flops), below a factorization's
+  const int small_solve = inside(1e7, true), large_solve = inside(5e8, true);
+  deallog << "auto, run/threads = 2: " << small_solve << " in 1e7-flop solves, "
+          << large_solve << " in 5e8-flop ones" << std::endl;
+  check(small_solve == 1 && large_solve == 2 && BlasThreads::current() == 1,
+        "auto, run/threads = 2: solves as the policy says, restored");
   BlasThreads::configure(3, 2);
   report("fixed 3", BlasThreads::current(), inside(1e6), inside(1e10), 3, 3);
 

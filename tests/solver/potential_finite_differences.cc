@@ -500,6 +500,47 @@ namespace
             what + "small strain: F_p(u) = transfer's updated F_p");
     }
 
+    // The step's stored stencils (MpmElasticityTerm::begin_step()) give
+    // every evaluation to the bit as the stencils computed on the fly, and
+    // end_step() goes back to those.
+    {
+      MpmScene<dim> scene(degree, model, 1.05 * rotation<dim>(0.2), 0.005);
+      const double  dx = scene.grid.lattice().dx;
+      const Vector<double> u =
+        scene.mapped_displacement(rotation<dim>(0.3), 0.002 * dx);
+      const Vector<double> p =
+        scene.mapped_displacement(rotation<dim>(-0.2), 0.001 * dx);
+      const auto evaluate = [&]() {
+        std::vector<double> r = {scene.elasticity.value(u),
+                                 scene.elasticity.step_bound(u, p),
+                                 scene.elasticity.minimum_determinant(u),
+                                 scene.elasticity.material_increment(p, dx)};
+        Vector<double>      gradient(u.size());
+        scene.elasticity.add_gradient(u, gradient);
+        r.insert(r.end(), gradient.begin(), gradient.end());
+        for (const HessianKind kind :
+             {HessianKind::exact, HessianKind::projected})
+          {
+            const SparseMatrix<double> &H = scene.potential.hessian(u, kind);
+            for (unsigned int row = 0; row < H.m(); ++row)
+              for (auto entry = H.begin(row); entry != H.end(row); ++entry)
+                r.push_back(entry->value());
+          }
+        return r;
+      };
+      const std::vector<double> computed = evaluate();
+      scene.elasticity.begin_step();
+      const std::vector<double> stored = evaluate();
+      scene.elasticity.end_step();
+      const std::vector<double> again = evaluate();
+      check(computed == stored && computed == again,
+            what +
+              "stored stencils: value, step bound, det F, increment, "
+              "gradient and both Hessians (" +
+              std::to_string(computed.size()) +
+              " numbers) as computed ones, to the bit");
+    }
+
     // The Newton increment on the material points (`solver/Newton
     // increment`): a translation c moves every particle by c and leaves F
     // (partition of unity); a linear field p_i = B x_i moves particle p by

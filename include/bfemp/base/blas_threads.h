@@ -17,7 +17,9 @@ namespace bfemp
    * The policy (`run/BLAS threads = auto`): one BLAS thread. Only when
    * `run/threads` = N > 1 is set, which says that N cores are the run's
    * own, does a factorization of more than parallel_flops floating-point
-   * operations get N (1.1-1.7 times faster on a quiet machine). A number
+   * operations get N (1.1-1.7 times faster on a quiet machine), and so do
+   * the triangular solves with a factor whose solves take more than
+   * parallel_solve_flops (1.25 times faster on the full twist). A number
    * instead of `auto` fixes the threads of every BLAS call. BLAS libraries
    * other than OpenBLAS cannot be told: describe() says so and nothing is
    * changed.
@@ -30,6 +32,15 @@ namespace bfemp
      * more than one BLAS thread (measured: doc/performance.md).
      */
     static constexpr double parallel_flops = 1e9;
+
+    /**
+     * A pair of triangular solves (4 nnz(L) flops) of this many flops or
+     * more is worth more than one thread: CHOLMOD's supernodal solves are
+     * BLAS-2 calls on the supernodes, and those of a 3D factor are large.
+     * On the full twist (nnz(L) about 5e7) two threads cut the solve time
+     * by a fifth (doc/performance.md "BLAS threads").
+     */
+    static constexpr double parallel_solve_flops = 1e8;
 
     /**
      * Sets the policy: @p fixed > 0 threads for every call, or (fixed = 0)
@@ -53,13 +64,15 @@ namespace bfemp
     describe();
 
     /**
-     * The BLAS threads of one factorization of @p flops, for its lifetime;
+     * The BLAS threads of one factorization or solve, for its lifetime;
      * the previous count afterwards.
      */
     class Scope
     {
     public:
-      explicit Scope(const double flops);
+      /** A factorization of @p flops, or (@p solve) a pair of triangular
+       *  solves of @p flops. */
+      explicit Scope(const double flops, const bool solve = false);
       ~Scope();
       Scope(const Scope &) = delete;
       Scope &
