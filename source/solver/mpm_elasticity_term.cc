@@ -5,6 +5,7 @@
 #include <bfemp/solver/determinant_bound.h>
 #include <bfemp/solver/mpm_elasticity_term.h>
 #include <bfemp/solver/node_blocks.h>
+#include <bfemp/solver/particle_block_kernels.h>
 
 #include <deal.II/base/parallel.h>
 
@@ -110,37 +111,6 @@ namespace bfemp
       force(const unsigned int k, const Tensor<2, dim> &P) const
       {
         return P * mapped_gradients[k];
-      }
-
-      /** A_k[a][b][d] = w sum_j A[a][j][b][d] g^_k[j]: the first contraction
-       *  of the Hessian blocks of row node k. */
-      Tensor<3, dim>
-      first_contraction(const unsigned int    k,
-                        const Tensor<4, dim> &A,
-                        const double          weight) const
-      {
-        Tensor<3, dim> A_k;
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                double sum = 0.;
-                for (unsigned int j = 0; j < dim; ++j)
-                  sum += A[a][j][b][d] * mapped_gradients[k][j];
-                A_k[a][b][d] = weight * sum;
-              }
-        return A_k;
-      }
-
-      /** Adds the block of nodes (k, l) from k's first contraction. */
-      void
-      add_block(const Tensor<3, dim> &A_k,
-                const unsigned int    l,
-                Tensor<2, dim>       &block) const
-      {
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            block[a][b] += A_k[a][b] * mapped_gradients[l];
       }
 
       unsigned int   n = 0;
@@ -285,7 +255,15 @@ namespace bfemp
               for (unsigned int l = k; l < stencils[p].n; ++l)
                 coupled[local[k] * nodes.size() + local[l]] = 1;
           }
-        contractions.resize(stencils.size() * Stencil::max_nodes);
+        // the kernels' layout: node data by component
+        // (particle_block_kernels.h)
+        gradients.assign(stencils.size() * dim * L, 0.);
+        for (unsigned int p = 0; p < stencils.size(); ++p)
+          for (unsigned int l = 0; l < stencils[p].n; ++l)
+            for (unsigned int d = 0; d < dim; ++d)
+              gradients[(p * dim + d) * L + l] =
+                stencils[p].mapped_gradients[l][d];
+        contractions.resize(stencils.size() * dim * dim * dim * L);
       }
 
       /** Sets particle @p p's tangent @p A and weight s V_p^0: the first
@@ -295,40 +273,56 @@ namespace bfemp
                    const Tensor<4, dim> &A,
                    const double          weight)
       {
-        const Stencil &s = stencils[p];
-        for (unsigned int k = 0; k < s.n; ++k)
-          contractions[p * Stencil::max_nodes + k] =
-            s.first_contraction(k, A, weight);
+        first_contractions<dim>(A.begin_raw(),
+                                weight,
+                                &gradients[p * dim * L],
+                                L,
+                                &contractions[p * dim * dim * dim * L]);
       }
 
       /**
-       * Sums the blocks of all particles, group by group: each block of a
-       * group's stencil gathers its particles' terms before it is added to
-       * the union's, so that the partial sums stay in registers (the
-       * per-particle loads and stores of the blocks dominated).
+       * Sums the blocks of all particles, group by group: each block row of
+       * a group's stencil gathers its particles' terms in registers
+       * (sum_block_row, several columns at once) before it is added to the
+       * union's blocks, so that each block is written once per group.
        */
       void
       sum_blocks()
       {
-        const std::size_t m = nodes.size();
+        constexpr unsigned int W = particle_block_width;
+        const std::size_t      m = nodes.size();
+        row.resize(dim * dim * L);
         for (unsigned int g = 0; g < n_groups; ++g)
           {
             const std::vector<unsigned int> &members = groups[g];
-            const Stencil                   &s       = stencils[members[0]];
+            const unsigned int               n       = stencils[members[0]].n;
             const unsigned int              *local =
               &positions[members[0] * Stencil::max_nodes];
-            // Stencil nodes are sorted, so k <= l means local[k] <= local[l].
-            for (unsigned int k = 0; k < s.n; ++k)
-              for (unsigned int l = k; l < s.n; ++l)
-                {
-                  Tensor<2, dim> block;
-                  for (const unsigned int p : members)
-                    stencils[p].add_block(
-                      contractions[p * Stencil::max_nodes + k],
-                      l,
-                      block);
-                  blocks[local[k] * m + local[l]] += block;
-                }
+            member_gradients.resize(members.size());
+            member_contractions.resize(members.size());
+            for (unsigned int i = 0; i < members.size(); ++i)
+              member_gradients[i] = &gradients[members[i] * dim * L];
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                for (unsigned int i = 0; i < members.size(); ++i)
+                  member_contractions[i] =
+                    &contractions[members[i] * dim * dim * dim * L + k];
+                // from the columns' vector that holds l = k: blocks k <= l
+                sum_block_row<dim>(member_contractions.data(),
+                                   member_gradients.data(),
+                                   members.size(),
+                                   L,
+                                   k / W * W,
+                                   row.data());
+                // Stencil nodes are sorted: k <= l means local[k] <= local[l].
+                for (unsigned int l = k; l < n; ++l)
+                  {
+                    Tensor<2, dim> &block = blocks[local[k] * m + local[l]];
+                    for (unsigned int a = 0; a < dim; ++a)
+                      for (unsigned int b = 0; b < dim; ++b)
+                        block[a][b] += row[(a * dim + b) * L + l];
+                  }
+              }
           }
       }
 
@@ -364,8 +358,20 @@ namespace bfemp
        *  n_groups entries; the vectors keep their memory). */
       std::vector<std::vector<unsigned int>> groups;
       unsigned int                           n_groups = 0;
-      /** The first contraction of particle p's row node k (add_particle). */
-      std::vector<Tensor<3, dim>> contractions;
+      /** The kernels' row length: Stencil::max_nodes rounded up to
+       *  particle_block_width. */
+      static constexpr unsigned int L =
+        (Stencil::max_nodes + particle_block_width - 1) / particle_block_width *
+        particle_block_width;
+      /** Particle p's mapped gradients from p dim L and its first
+       *  contractions from p dim^3 L (particle_block_kernels.h). */
+      std::vector<double> gradients;
+      std::vector<double> contractions;
+      /** sum_blocks()'s buffers: a group's particles' data, one block
+       *  row. */
+      std::vector<const double *> member_gradients;
+      std::vector<const double *> member_contractions;
+      std::vector<double>         row;
     };
 
 

@@ -25,6 +25,7 @@ namespace bfemp
     carried_constraint_moves += other.carried_constraint_moves;
     projected_hessians += other.projected_hessians;
     factorizations += other.factorizations;
+    cg_iterations += other.cg_iterations;
     residual            = other.residual;
     energy              = other.energy;
     minimum_determinant = other.minimum_determinant;
@@ -244,7 +245,8 @@ namespace bfemp
                                    const double            energy,
                                    const double            gradient_norm,
                                    const double            forcing,
-                                   const bool              factorized) const
+                                   const bool              factorized,
+                                   const unsigned int      cg_iterations) const
   {
     std::ostringstream line;
     line << std::setprecision(3) << "  " << step_label << ": iteration "
@@ -255,6 +257,8 @@ namespace bfemp
          << (factorized ? "factorized" : "CG with an older factorization");
     if (!factorized)
       line << " to eta " << forcing;
+    if (cg_iterations > 0)
+      line << ", " << cg_iterations << " CG iterations";
     std::cout << line.str() << std::endl;
   }
 
@@ -296,7 +300,8 @@ namespace bfemp
     const Vector<double>       &minus_gradient,
     const double                relative_tolerance,
     const bool                  warm_start,
-    Vector<double>             &direction) const
+    Vector<double>             &direction,
+    NewtonStatistics           &statistics) const
   {
     // Within a step the Hessian changes little from one iteration to the
     // next once the contact set has settled: an earlier factorization is
@@ -327,8 +332,10 @@ namespace bfemp
       }
     catch (const SolverControl::NoConvergence &)
       {
+        statistics.cg_iterations += control.last_step();
         return false;
       }
+    statistics.cg_iterations += control.last_step();
     return std::isfinite(direction.linfty_norm());
   }
 
@@ -360,7 +367,8 @@ namespace bfemp
                                                         minus_gradient,
                                                         inexact.forcing,
                                                         false,
-                                                        direction);
+                                                        direction,
+                                                        statistics);
             potential.dof_space().project(direction);
             // CG from p = 0 underestimates |p| (its iterates grow in the
             // preconditioner's norm): a loose direction that would pass the
@@ -373,7 +381,8 @@ namespace bfemp
                                                        minus_gradient,
                                                        exact_forcing,
                                                        true,
-                                                       direction);
+                                                       direction,
+                                                       statistics);
                 potential.dof_space().project(direction);
               }
             statistics.solve_time += timer.wall_time();
@@ -479,6 +488,7 @@ namespace bfemp
         gradient *= -1.;
         statistics.assembly_time += timer.wall_time();
         const unsigned int factorizations_before = statistics.factorizations;
+        const unsigned int cg_iterations_before  = statistics.cg_iterations;
         const InexactSolve inexact{forcing(gradient.l2_norm(),
                                            statistics.iterations == 1),
                                    stop_at,
@@ -553,7 +563,8 @@ namespace bfemp
                         energy,
                         gradient.l2_norm(),
                         inexact.forcing,
-                        statistics.factorizations > factorizations_before);
+                        statistics.factorizations > factorizations_before,
+                        statistics.cg_iterations - cg_iterations_before);
         if (statistics.residual < stop_at && progress == 1.)
           break;
         if (step == 0. && !(statistics.residual < stop_at))

@@ -14,6 +14,13 @@
 //    growing force, equal and opposite plate forces, the second particle
 //    row touching, F within [0.6, 1.2] F_Hertz(a)), which hold for the
 //    frictionless contact that Hertz's solution assumes;
+//    The iterations per step are recorded as a bound only: after about
+//    eight iterations ||g|| reaches its round-off (2e-7 here) and the
+//    material measure of the directions it produces wanders between 1e-8
+//    and 3e-7 m/s, so a step ends when an iterate happens to fall below
+//    1e-8. The worst step's count follows the last bits of the Hessian
+//    (38, 15 and 43 with three summation orders of the particle blocks)
+//    and so differs between machines; it goes to stdout;
 //  - with the measure over the unknowns (at most 200 iterations per step
 //    here), the run stops with no convergence: the floor is still there,
 //    and this test says so if it goes away.
@@ -43,12 +50,15 @@ main(int argc, char **argv)
                                                 0.259);
   const auto   iterations =
     implicit_scene::columns("hertz_material", {"newton_iterations"})[0];
+  const int most = static_cast<int>(implicit_scene::max_of(
+    std::vector<double>(iterations.begin() + 1, iterations.end())));
+  std::cout << "material points: at most " << most
+            << " Newton iterations per step" << std::endl;
   dealii::deallog << "material points: F = "
-                  << implicit_scene::rounded(force, 3) << " N, at most "
-                  << static_cast<int>(implicit_scene::max_of(
-                       std::vector<double>(iterations.begin() + 1,
-                                           iterations.end())))
-                  << " Newton iterations per step" << std::endl;
+                  << implicit_scene::rounded(force, 3) << " N" << std::endl;
+  bfemp_tests::check(most <= 100,
+                     "material points: every step converged in at most 100 "
+                     "Newton iterations");
 
   implicit_scene::write("unknowns.prm",
                         frictionless +

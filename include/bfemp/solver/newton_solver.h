@@ -38,6 +38,10 @@ namespace bfemp
      *  iterations with `solver/factorization reuse`, more where a fall-back
      *  refactorizes; the constraint moves' response solves not counted). */
     unsigned int factorizations = 0;
+    /** Conjugate-gradient iterations preconditioned with an older
+     *  factorization (`solver/factorization reuse`), failed solves
+     *  included: each costs a pair of triangular solves. */
+    unsigned int cg_iterations = 0;
     /** ||p|| / dt of the last iteration [m/s], p measured as
      *  IncrementalPotential::increment_norm() says. */
     double residual = 0.;
@@ -146,7 +150,8 @@ namespace bfemp
     forcing(const double gradient_norm, const bool first) const;
 
     /** `solver/log iterations`: one line on stdout for the iteration just
-     *  done (@p factorized: its direction came from a new factorization). */
+     *  done (@p factorized: its direction came from a new factorization;
+     *  @p cg_iterations: those of its solves with an older one). */
     void
     log_iteration(const std::string      &step_label,
                   const NewtonStatistics &statistics,
@@ -155,7 +160,8 @@ namespace bfemp
                   const double            energy,
                   const double            gradient_norm,
                   const double            forcing,
-                  const bool              factorized) const;
+                  const bool              factorized,
+                  const unsigned int      cg_iterations) const;
 
     /**
      * Moves the constrained components of @p u towards their targets and
@@ -210,9 +216,10 @@ namespace bfemp
     bool
     solve_with_last_factorization(const SparseMatrix<double> &hessian,
                                   const Vector<double>       &minus_gradient,
-                                  const double    relative_tolerance,
-                                  const bool      warm_start,
-                                  Vector<double> &direction) const;
+                                  const double      relative_tolerance,
+                                  const bool        warm_start,
+                                  Vector<double>   &direction,
+                                  NewtonStatistics &statistics) const;
 
     const SolverParameters        parameters;
     std::unique_ptr<LinearSolver> solver;
