@@ -38,7 +38,6 @@ import csv
 import json
 import os
 import platform
-import resource
 import shutil
 import subprocess
 import tempfile
@@ -146,6 +145,23 @@ def run_to_start(binary, build, scene, start):
     return os.path.join(folder, "prefix")
 
 
+def run_measured(command, folder):
+    """Runs command in folder and returns the resource usage of that process
+    alone (os.wait4): RUSAGE_CHILDREN's ru_maxrss is the largest of all
+    children so far, which gave every run the peak memory of the largest."""
+    with tempfile.TemporaryFile() as log:
+        process = subprocess.Popen(command, cwd=folder, stdout=log,
+                                   stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(process.pid, 0)
+        process.returncode = os.waitstatus_to_exitcode(status)
+        if process.returncode != 0:
+            log.seek(0)
+            raise subprocess.CalledProcessError(
+                process.returncode, command,
+                log.read().decode(errors="replace"))
+    return usage
+
+
 def run(binary, folder, scene, name, steps, changes, start=0., prefix=None):
     if prefix is not None:
         # the variant continues the run to `start` in a copy of its folder
@@ -153,21 +169,17 @@ def run(binary, folder, scene, name, steps, changes, start=0., prefix=None):
         changes = dict(changes)
         changes["checkpoint"] = {"resume": "true"}
     path = write_prm(folder, scene, name, start + steps * 1e-2, changes)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     clock = time.perf_counter()
-    subprocess.run([binary, path], cwd=folder, check=True,
-                   capture_output=True, text=True)
+    usage = run_measured([binary, path], folder)
     wall = time.perf_counter() - clock
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(os.path.join(folder, name, "diagnostics.csv")) as f:
         # the slice's rows (row 0 of a run from t = 0: the initial state)
         rows = [r for r in csv.DictReader(f)
                 if float(r["time"]) > start + 1e-9]
     result = {
         "wall time [s]": wall,
-        "CPU time [s]": (after.ru_utime - before.ru_utime +
-                         after.ru_stime - before.ru_stime),
-        "peak memory [MB]": after.ru_maxrss / 1024.,
+        "CPU time [s]": usage.ru_utime + usage.ru_stime,
+        "peak memory [MB]": usage.ru_maxrss / 1024.,
         "steps": len(rows),
         "Newton iterations": sum(int(r["newton_iterations"]) for r in rows),
         "friction updates": sum(int(r["friction_updates"]) for r in rows),
