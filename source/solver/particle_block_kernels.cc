@@ -2,6 +2,10 @@
 
 #include <cstring>
 
+// deal.II's flags switch -Wpsabi off; here it would name a vector passed
+// between code compiled for different instruction sets (see Nodes).
+#pragma GCC diagnostic warning "-Wpsabi"
+
 // Two versions of each kernel on x86-64 with GCC: AVX2 with fused
 // multiply-adds where the processor has them, the baseline instruction set
 // elsewhere (resolved once when the library is loaded).
@@ -17,23 +21,13 @@ namespace bfemp
   namespace
   {
     /** particle_block_width doubles in one vector (two SSE2 registers on
-     *  the baseline, one AVX register on x86-64-v3). */
+     *  the baseline, one AVX register on x86-64-v3). Vectors are loaded and
+     *  stored with memcpy inside the kernels, never passed to a function:
+     *  a helper is compiled for the baseline, whose calling convention for
+     *  a 32-byte vector differs from the AVX clone's (without inlining, in
+     *  Debug builds, the values came back wrong). */
     typedef double Nodes
       __attribute__((vector_size(particle_block_width * sizeof(double))));
-
-    inline Nodes
-    load(const double *values)
-    {
-      Nodes v;
-      std::memcpy(&v, values, sizeof(v));
-      return v;
-    }
-
-    inline void
-    store(const Nodes &v, double *values)
-    {
-      std::memcpy(values, &v, sizeof(v));
-    }
   } // namespace
 
   template <int dim>
@@ -48,7 +42,7 @@ namespace bfemp
       {
         Nodes g[dim];
         for (unsigned int j = 0; j < dim; ++j)
-          g[j] = load(gradients + j * L + c);
+          std::memcpy(&g[j], gradients + j * L + c, sizeof(Nodes));
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             for (unsigned int d = 0; d < dim; ++d)
@@ -56,8 +50,10 @@ namespace bfemp
                 Nodes sum = {};
                 for (unsigned int j = 0; j < dim; ++j)
                   sum += tangent[((a * dim + j) * dim + b) * dim + d] * g[j];
-                store(weight * sum,
-                      contractions + ((a * dim + b) * dim + d) * L + c);
+                sum *= weight;
+                std::memcpy(contractions + ((a * dim + b) * dim + d) * L + c,
+                            &sum,
+                            sizeof(Nodes));
               }
       }
   }
@@ -81,13 +77,14 @@ namespace bfemp
             const double *A = contractions[p];
             for (unsigned int d = 0; d < dim; ++d)
               {
-                const Nodes g = load(gradients[p] + d * L + c);
+                Nodes g;
+                std::memcpy(&g, gradients[p] + d * L + c, sizeof(Nodes));
                 for (unsigned int ab = 0; ab < dim * dim; ++ab)
                   sum[ab] += A[(ab * dim + d) * L] * g;
               }
           }
         for (unsigned int ab = 0; ab < dim * dim; ++ab)
-          store(sum[ab], row + ab * L + c);
+          std::memcpy(row + ab * L + c, &sum[ab], sizeof(Nodes));
       }
   }
 
