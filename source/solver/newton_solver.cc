@@ -246,7 +246,8 @@ namespace bfemp
                                    const double            gradient_norm,
                                    const double            forcing,
                                    const bool              factorized,
-                                   const unsigned int      cg_iterations) const
+                                   const unsigned int      cg_iterations,
+                                   const bool              projected) const
   {
     std::ostringstream line;
     line << std::setprecision(3) << "  " << step_label << ": iteration "
@@ -259,6 +260,10 @@ namespace bfemp
       line << " to eta " << forcing;
     if (cg_iterations > 0)
       line << ", " << cg_iterations << " CG iterations";
+    // the exact Hessian was indefinite (or its solve failed): this
+    // iteration's factorization count includes the failed attempt
+    if (projected)
+      line << ", projected Hessian";
     std::cout << line.str() << std::endl;
   }
 
@@ -564,7 +569,8 @@ namespace bfemp
                         gradient.l2_norm(),
                         inexact.forcing,
                         statistics.factorizations > factorizations_before,
-                        statistics.cg_iterations - cg_iterations_before);
+                        statistics.cg_iterations - cg_iterations_before,
+                        !exact);
         if (statistics.residual < stop_at && progress == 1.)
           break;
         if (step == 0. && !(statistics.residual < stop_at))

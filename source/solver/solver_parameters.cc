@@ -113,8 +113,11 @@ namespace bfemp
                       "tolerance, the accepted step length, the line search's "
                       "backtracks, E, ||g||, the forcing term and whether the "
                       "direction came from a new factorization or from CG "
-                      "with an older one. For finding out where a scene's "
-                      "Newton iterations go.");
+                      "with an older one, and whether the iteration fell "
+                      "back to the projected Hessian. For finding out where "
+                      "a scene's Newton iterations go; "
+                      "benchmarks/newton_log_summary.py sums such a log per "
+                      "step and friction pass.");
     prm.declare_entry("check invariants",
                       "false",
                       Patterns::Bool(),

@@ -174,17 +174,45 @@ namespace
     std::cout << log.str();
     // 'solver/log iterations': one line per iteration, each from a new
     // factorization (no reuse here)
-    unsigned int n_lines = 0, n_factorized = 0;
+    unsigned int n_lines = 0, n_factorized = 0, n_projected = 0;
     for (std::string line; std::getline(log, line);)
       if (line.rfind("  static bar: iteration ", 0) == 0)
         {
           ++n_lines;
           n_factorized += line.find(", factorized") != std::string::npos;
+          n_projected += line.find(", projected Hessian") != std::string::npos;
         }
     check(n_lines == statistics.iterations && n_factorized == n_lines,
           what + "the iteration log has one line per Newton iteration (" +
             std::to_string(n_lines) + "), each from a factorization (" +
             std::to_string(n_factorized) + ")");
+    check(n_projected == statistics.projected_hessians,
+          what + "the log marks the iterations with the projected Hessian (" +
+            std::to_string(n_projected) + " of " +
+            std::to_string(statistics.projected_hessians) + ")");
+    {
+      // Projected Newton throughout: every line says so.
+      SolverParameters always(parameters);
+      always.hessian_projection = "always";
+      NewtonSolver<dim> projected_newton(always);
+      Vector<double>    u_projected(scene.dofs.n_dofs());
+      std::stringstream projected_log;
+      std::streambuf   *saved = std::cout.rdbuf(projected_log.rdbuf());
+      const auto        s     = projected_newton.minimize(scene.potential,
+                                               u_projected,
+                                               1.,
+                                               "static bar");
+      std::cout.rdbuf(saved);
+      unsigned int marked = 0;
+      for (std::string line; std::getline(projected_log, line);)
+        marked += line.find(", projected Hessian") != std::string::npos;
+      check(marked == s.iterations && s.projected_hessians == s.iterations,
+            what +
+              "with 'Hessian projection = always' every log line marks "
+              "the projected Hessian (" +
+              std::to_string(marked) + " of " + std::to_string(s.iterations) +
+              " iterations)");
+    }
     Vector<double> difference(u_solver);
     difference -= u;
     std::cout << what << "NewtonSolver: " << statistics.iterations

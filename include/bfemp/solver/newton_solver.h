@@ -151,7 +151,8 @@ namespace bfemp
 
     /** `solver/log iterations`: one line on stdout for the iteration just
      *  done (@p factorized: its direction came from a new factorization;
-     *  @p cg_iterations: those of its solves with an older one). */
+     *  @p cg_iterations: those of its solves with an older one;
+     *  @p projected: it fell back to the projected Hessian). */
     void
     log_iteration(const std::string      &step_label,
                   const NewtonStatistics &statistics,
@@ -161,7 +162,8 @@ namespace bfemp
                   const double            gradient_norm,
                   const double            forcing,
                   const bool              factorized,
-                  const unsigned int      cg_iterations) const;
+                  const unsigned int      cg_iterations,
+                  const bool              projected) const;
 
     /**
      * Moves the constrained components of @p u towards their targets and
