@@ -88,6 +88,12 @@ VARIANTS = {
         "solver": dict(MATERIAL, **{"factorization reuse": "30",
                                     "forcing term": "Eisenstat-Walker"}),
         "run": {"threads": "2"}},
+    "material_loose_reuse30_ew_extrapolated_threads2": {
+        "contact": {"friction pass tolerance factor": "100"},
+        "solver": dict(MATERIAL, **{"factorization reuse": "30",
+                                    "forcing term": "Eisenstat-Walker",
+                                    "projected step extrapolation": "3"}),
+        "run": {"threads": "2"}},
     "material_loose_reuse_ew_projected_threads2": {
         "contact": {"friction pass tolerance factor": "100"},
         "solver": dict(MATERIAL, **{"factorization reuse": "10",

@@ -264,8 +264,8 @@ namespace bfemp
                             hessian);
         book_force(s);
       }
-    if (hessian_kind == HessianKind::projected)
-      project_to_positive_semidefinite(result.hessian);
+    if (hessian_kind)
+      filter_eigenvalues(result.hessian, eigenvalue_filter(*hessian_kind));
     return result;
   }
 

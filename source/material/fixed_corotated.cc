@@ -191,8 +191,9 @@ namespace bfemp
 
   template <int dim>
   Tensor<4, dim>
-  FixedCorotated<dim>::projected_first_piola_kirchhoff_derivative(
-    const Tensor<2, dim> &F) const
+  FixedCorotated<dim>::filtered_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim>  &F,
+    const EigenvalueFilter filter) const
   {
     const SingularValueDecomposition<dim> svd =
       signed_singular_value_decomposition(F);
@@ -229,7 +230,7 @@ namespace bfemp
             flip[i][j]     = 2. * mu - c;
           }
       }
-    return project_isotropic_tangent(svd, hessian, twist, flip);
+    return project_isotropic_tangent(svd, hessian, twist, flip, filter);
   }
 
 

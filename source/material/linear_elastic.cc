@@ -35,9 +35,8 @@ namespace bfemp
     // i.e. 2 mu on sym - spherical and 2 mu + dim lambda on spherical.
     const double shear_eigenvalue = 2. * moduli.mu;
     const double bulk_eigenvalue  = 2. * moduli.mu + dim * moduli.lambda;
-    if (shear_eigenvalue >= 0. && bulk_eigenvalue >= 0.)
-      projected_tangent = tangent;
-    else
+    const auto   spectral         = [&](const EigenvalueFilter filter) {
+      Tensor<4, dim> result;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           for (unsigned int k = 0; k < dim; ++k)
@@ -46,10 +45,20 @@ namespace bfemp
                 const double sym =
                   0.5 * ((i == k && j == l) + (i == l && j == k));
                 const double spherical = (i == j && k == l) / double(dim);
-                projected_tangent[i][j][k][l] =
-                  std::max(shear_eigenvalue, 0.) * (sym - spherical) +
-                  std::max(bulk_eigenvalue, 0.) * spherical;
+                result[i][j][k][l] =
+                  filtered_eigenvalue(shear_eigenvalue, filter) *
+                    (sym - spherical) +
+                  filtered_eigenvalue(bulk_eigenvalue, filter) * spherical;
               }
+      return result;
+    };
+    if (shear_eigenvalue >= 0. && bulk_eigenvalue >= 0.)
+      projected_tangent = absolute_tangent = tangent;
+    else
+      {
+        projected_tangent = spectral(EigenvalueFilter::clamp);
+        absolute_tangent  = spectral(EigenvalueFilter::absolute);
+      }
   }
 
 
@@ -89,9 +98,19 @@ namespace bfemp
 
   template <int dim>
   Tensor<4, dim>
-  LinearElastic<dim>::projected_first_piola_kirchhoff_derivative(
-    const Tensor<2, dim> &) const
+  LinearElastic<dim>::filtered_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim> &,
+    const EigenvalueFilter filter) const
   {
+    switch (filter)
+      {
+        case EigenvalueFilter::none:
+          return tangent;
+        case EigenvalueFilter::clamp:
+          return projected_tangent;
+        case EigenvalueFilter::absolute:
+          return absolute_tangent;
+      }
     return projected_tangent;
   }
 

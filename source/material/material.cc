@@ -32,8 +32,21 @@ namespace bfemp
   Tensor<4, dim>
   Material<dim>::tangent(const Tensor<2, dim> &F, const bool projected) const
   {
-    return projected ? projected_first_piola_kirchhoff_derivative(F)
-                     : first_piola_kirchhoff_derivative(F);
+    return tangent(F,
+                   projected ? EigenvalueFilter::clamp
+                             : EigenvalueFilter::none);
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  Material<dim>::tangent(const Tensor<2, dim>  &F,
+                         const EigenvalueFilter filter) const
+  {
+    return filter == EigenvalueFilter::none
+             ? first_piola_kirchhoff_derivative(F)
+             : filtered_first_piola_kirchhoff_derivative(F, filter);
   }
 
 
@@ -43,8 +56,20 @@ namespace bfemp
   Material<dim>::projected_first_piola_kirchhoff_derivative(
     const Tensor<2, dim> &F) const
   {
-    return project_to_positive_semidefinite(
-      first_piola_kirchhoff_derivative(F));
+    return filtered_first_piola_kirchhoff_derivative(F,
+                                                     EigenvalueFilter::clamp);
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  Material<dim>::filtered_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim>  &F,
+    const EigenvalueFilter filter) const
+  {
+    return TangentProjection<dim>(first_piola_kirchhoff_derivative(F))
+      .filtered(filter);
   }
 
 

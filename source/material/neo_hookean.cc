@@ -76,8 +76,9 @@ namespace bfemp
 
   template <int dim>
   Tensor<4, dim>
-  NeoHookean<dim>::projected_first_piola_kirchhoff_derivative(
-    const Tensor<2, dim> &F) const
+  NeoHookean<dim>::filtered_first_piola_kirchhoff_derivative(
+    const Tensor<2, dim>  &F,
+    const EigenvalueFilter filter) const
   {
     const SingularValueDecomposition<dim> svd =
       signed_singular_value_decomposition(F);
@@ -106,7 +107,7 @@ namespace bfemp
             flip[i][j]                   = mu - c * inverse_product;
           }
       }
-    return project_isotropic_tangent(svd, hessian, twist, flip);
+    return project_isotropic_tangent(svd, hessian, twist, flip, filter);
   }
 
 

@@ -264,7 +264,8 @@ namespace bfemp
     const SingularValueDecomposition<dim> &svd,
     const SymmetricTensor<2, dim>         &singular_value_hessian,
     const SymmetricTensor<2, dim>         &twist_eigenvalues,
-    const SymmetricTensor<2, dim>         &flip_eigenvalues)
+    const SymmetricTensor<2, dim>         &flip_eigenvalues,
+    const EigenvalueFilter                 filter)
   {
     // The dim^2 x dim^2 matrix with row (i, j) -> i * dim + j, as in
     // TangentProjection; only its upper triangle is accumulated, and the
@@ -300,7 +301,7 @@ namespace bfemp
       {
         symmetric_eigen_decomposition<dim>(hessian, c);
         for (unsigned int m = 0; m < dim; ++m)
-          w[m] = hessian[m][m];
+          w[m] = filtered_eigenvalue(hessian[m][m], filter);
       }
     for (unsigned int m = 0; m < dim; ++m)
       if (w[m] > 0.)
@@ -321,8 +322,10 @@ namespace bfemp
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i + 1; j < dim; ++j)
         {
-          const double twist = twist_eigenvalues[i][j];
-          const double flip  = flip_eigenvalues[i][j];
+          const double twist =
+            filtered_eigenvalue(twist_eigenvalues[i][j], filter);
+          const double flip =
+            filtered_eigenvalue(flip_eigenvalues[i][j], filter);
           if (twist > 0.)
             {
               for (unsigned int a = 0; a < dim; ++a)
@@ -359,10 +362,12 @@ namespace bfemp
   project_isotropic_tangent<2>(const SingularValueDecomposition<2> &,
                                const SymmetricTensor<2, 2> &,
                                const SymmetricTensor<2, 2> &,
-                               const SymmetricTensor<2, 2> &);
+                               const SymmetricTensor<2, 2> &,
+                               const EigenvalueFilter);
   template Tensor<4, 3>
   project_isotropic_tangent<3>(const SingularValueDecomposition<3> &,
                                const SymmetricTensor<2, 3> &,
                                const SymmetricTensor<2, 3> &,
-                               const SymmetricTensor<2, 3> &);
+                               const SymmetricTensor<2, 3> &,
+                               const EigenvalueFilter);
 } // namespace bfemp

@@ -100,13 +100,25 @@ namespace bfemp
   Tensor<4, dim>
   TangentProjection<dim>::projected() const
   {
+    return filtered(EigenvalueFilter::clamp);
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  TangentProjection<dim>::filtered(const EigenvalueFilter filter) const
+  {
     Tensor<4, dim> result;
     for (unsigned int m = 0; m < n; ++m)
-      if (lambda[m] > 0.)
-        for (unsigned int r = 0; r < n; ++r)
-          for (unsigned int c = 0; c < n; ++c)
-            result[r / dim][r % dim][c / dim][c % dim] +=
-              lambda[m] * q[r][m] * q[c][m];
+      {
+        const double weight = filtered_eigenvalue(lambda[m], filter);
+        if (weight != 0.)
+          for (unsigned int r = 0; r < n; ++r)
+            for (unsigned int c = 0; c < n; ++c)
+              result[r / dim][r % dim][c / dim][c % dim] +=
+                weight * q[r][m] * q[c][m];
+      }
     return result;
   }
 

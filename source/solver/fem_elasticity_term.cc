@@ -185,8 +185,8 @@ namespace bfemp
           for (unsigned int c = 0; c < dim; ++c)
             copy.dof_indices[dim * a + c] = dim * nodes[a] + c;
         const Tensor<2, dim> F = element.deformation_gradient(positions(*e, u));
-        copy.local             = element.hessian(
-          body.material().tangent(F, kind == HessianKind::projected));
+        copy.local =
+          element.hessian(body.material().tangent(F, eigenvalue_filter(kind)));
         copy.local *= scale;
       },
       [&](const Copy &copy) { hessian.add(copy.dof_indices, copy.local); },

@@ -561,7 +561,7 @@ namespace bfemp
         cell.add_particle(
           p,
           materials[s.material]->tangent(s.deformation_gradient(u),
-                                         kind == HessianKind::projected),
+                                         eigenvalue_filter(kind)),
           scale * s.volume);
       }
     cell.sum_blocks();

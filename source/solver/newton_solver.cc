@@ -94,6 +94,7 @@ namespace bfemp
                                  const double                     slope,
                                  Vector<double>                  &trial,
                                  double                          &trial_energy,
+                                 const bool                       projected,
                                  NewtonStatistics &statistics) const
   {
     // Filtering (Section 5): no trial point may reach det F = 0 or a
@@ -125,7 +126,14 @@ namespace bfemp
           {
             if (trial_energy <=
                 energy + parameters.armijo_constant * step * slope)
-              return step;
+              return projected && step == 1.
+                       ? extrapolate(potential,
+                                     u,
+                                     p,
+                                     parameters.step_bound_fraction * bound,
+                                     trial,
+                                     trial_energy)
+                       : step;
             if (step * std::abs(slope) <= round_off &&
                 trial_energy <= energy + round_off)
               {
@@ -139,6 +147,38 @@ namespace bfemp
         ++statistics.backtracks;
       }
     return 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::extrapolate(const IncrementalPotential<dim> &potential,
+                                 const Vector<double>            &u,
+                                 const Vector<double>            &p,
+                                 const double                     bound,
+                                 Vector<double>                  &trial,
+                                 double &trial_energy) const
+  {
+    // The projected Hessian's model overestimates the curvature along p
+    // (H+ >= H), so E often still falls beyond the full step: double it
+    // while it does, inside the filter's bound.
+    double         step = 1.;
+    Vector<double> longer;
+    for (unsigned int k = 0; k < parameters.projected_step_extrapolation; ++k)
+      {
+        if (2. * step > bound)
+          break;
+        longer = u;
+        longer.add(2. * step, p);
+        const double longer_energy = potential.value(longer);
+        if (!(longer_energy < trial_energy))
+          break;
+        step *= 2.;
+        trial.swap(longer);
+        trial_energy = longer_energy;
+      }
+    return step;
   }
 
 
@@ -247,7 +287,8 @@ namespace bfemp
                                    const double            forcing,
                                    const bool              factorized,
                                    const unsigned int      cg_iterations,
-                                   const bool              projected) const
+                                   const HessianKind       kind,
+                                   const double            model_ratio) const
   {
     std::ostringstream line;
     line << std::setprecision(3) << "  " << step_label << ": iteration "
@@ -260,11 +301,34 @@ namespace bfemp
       line << " to eta " << forcing;
     if (cg_iterations > 0)
       line << ", " << cg_iterations << " CG iterations";
-    // the exact Hessian was indefinite (or its solve failed): this
-    // iteration's factorization count includes the failed attempt
-    if (projected)
+    // the exact Hessian was not used (with 'when indefinite': it was
+    // indefinite or its solve failed, and the factorization count includes
+    // the failed attempt)
+    if (kind == HessianKind::projected)
       line << ", projected Hessian";
+    else if (kind == HessianKind::absolute)
+      line << ", projected Hessian (absolute eigenvalues)";
+    line << ", model ratio " << model_ratio;
     std::cout << line.str() << std::endl;
+  }
+
+
+
+  template <int dim>
+  HessianKind
+  NewtonSolver<dim>::next_filter(const HessianKind current,
+                                 const double      model_ratio)
+  {
+    // A ratio well below 1: the model was too flat along the step, which
+    // clamping negative curvature to 0 gives; well above 1: too curved,
+    // which absolute values give near a minimizer whose exact Hessian is
+    // positive definite. The band between keeps the last choice, so that
+    // the model does not flip every iteration.
+    if (model_ratio < 0.25)
+      return HessianKind::absolute;
+    if (model_ratio > 0.75)
+      return HessianKind::projected;
+    return current;
   }
 
 
@@ -399,7 +463,7 @@ namespace bfemp
         timer.restart();
         bool factorized = true;
         ++statistics.factorizations;
-        if (kind == HessianKind::projected)
+        if (kind != HessianKind::exact)
           solver->factorize(hessian);
         else
           factorized = solver->factorize_if_positive_definite(hessian);
@@ -417,11 +481,11 @@ namespace bfemp
       }
     catch (const SimulationError &)
       {
-        if (kind == HessianKind::projected)
+        if (kind != HessianKind::exact)
           throw;
         return false;
       }
-    if (kind == HessianKind::projected)
+    if (kind != HessianKind::exact)
       return true;
     // Solvers that cannot detect indefiniteness: a direction that does not
     // descend (or is not finite) came from an indefinite matrix.
@@ -476,6 +540,11 @@ namespace bfemp
       throw SimulationError(message.str());
     };
 
+    // The positive semi-definite model the projected iterations use; with
+    // 'adaptive' it follows the model ratio of the last iteration.
+    HessianKind filtered_kind = parameters.eigenvalue_filter == "absolute"
+                                  ? HessianKind::absolute
+                                  : HessianKind::projected;
     while (true)
       {
         if (statistics.iterations == parameters.maximum_newton_iterations)
@@ -511,12 +580,13 @@ namespace bfemp
                                             inexact,
                                             direction,
                                             statistics);
+        const HessianKind filtered_kind_used = filtered_kind;
         if (!exact)
           {
             newton_direction(potential,
                              u,
                              gradient,
-                             HessianKind::projected,
+                             filtered_kind,
                              inexact,
                              direction,
                              statistics);
@@ -539,9 +609,22 @@ namespace bfemp
                                             slope,
                                             trial,
                                             trial_energy,
+                                            !exact,
                                             statistics);
         statistics.line_search_time += timer.wall_time();
 
+        // rho = actual / predicted decrease, the model m(t p) = E + t g.p +
+        // t^2 p.H p / 2 with H p = -g: m(t p) - E = t g.p (1 - t / 2).
+        // (An extrapolated step t > 1 is measured against the model's
+        // decrease at t = 1, its minimum.)
+        const double model_step = std::min(step, 1.);
+        const double model_ratio =
+          step > 0. && slope < 0.
+            ? (trial_energy - energy) /
+                (model_step * slope * (1. - 0.5 * model_step))
+            : 0.;
+        if (parameters.eigenvalue_filter == "adaptive")
+          filtered_kind = next_filter(filtered_kind, model_ratio);
         if (step > 0.)
           {
             u.swap(trial);
@@ -570,7 +653,8 @@ namespace bfemp
                         inexact.forcing,
                         statistics.factorizations > factorizations_before,
                         statistics.cg_iterations - cg_iterations_before,
-                        !exact);
+                        exact ? HessianKind::exact : filtered_kind_used,
+                        model_ratio);
         if (statistics.residual < stop_at && progress == 1.)
           break;
         if (step == 0. && !(statistics.residual < stop_at))

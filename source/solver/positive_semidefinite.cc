@@ -8,6 +8,16 @@ namespace bfemp
   void
   project_to_positive_semidefinite(FullMatrix<double> &matrix)
   {
+    filter_eigenvalues(matrix, EigenvalueFilter::clamp);
+  }
+
+
+
+  void
+  filter_eigenvalues(FullMatrix<double> &matrix, const EigenvalueFilter filter)
+  {
+    if (filter == EigenvalueFilter::none)
+      return;
     // Cyclic Jacobi: robust for the small, often rank-deficient and
     // clustered matrices of contact stencils (LAPACK's bisection-based
     // syevx failed on some), deterministic, and O(n^3) per sweep for n of
@@ -69,10 +79,11 @@ namespace bfemp
 
     matrix = 0.;
     for (unsigned int k = 0; k < n; ++k)
-      if (a(k, k) > 0.)
+      if (const double weight = filtered_eigenvalue(a(k, k), filter);
+          weight > 0.)
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double vi = a(k, k) * q(i, k);
+            const double vi = weight * q(i, k);
             for (unsigned int j = 0; j < n; ++j)
               matrix(i, j) += vi * q(j, k);
           }

@@ -43,6 +43,24 @@ namespace bfemp
       "if it descends), which restores quadratic convergence near a "
       "minimizer at the price of a second assembly where it falls back. "
       "The converged steps agree within the Newton tolerance.");
+    prm.declare_entry(
+      "eigenvalue filter",
+      "clamp",
+      Patterns::Selection("clamp|absolute|adaptive"),
+      "[-] How the projected Hessian (every iteration with 'Hessian "
+      "projection = always', the fallback otherwise) makes each local "
+      "Hessian positive semi-definite. clamp: negative eigenvalues set to "
+      "0, the nearest PSD matrix, as in BFEMP Section 5. absolute: negative "
+      "eigenvalues replaced by their absolute values (Chen et al., "
+      "'Trust-region eigenvalue filtering for projected Newton', SIGGRAPH "
+      "Asia 2024), so that a direction of negative curvature (a compressed "
+      "neo-Hookean particle's rotation, a contact distance to an edge) "
+      "keeps a curvature of its size; near a minimizer whose exact Hessian "
+      "is positive definite this overestimates the curvature, and Newton "
+      "crawls. adaptive: chooses per iteration from the ratio rho of the "
+      "actual to the predicted decrease of the last one, absolute below "
+      "rho = 0.25 (the model was too flat), clamp above 0.75, the last "
+      "choice between (after the same paper). The minimizer is the same.");
     prm.declare_entry("CG tolerance",
                       "1e-10",
                       Patterns::Double(),
@@ -105,6 +123,17 @@ namespace bfemp
       "stopping test is solved again to 1e-8 ||g|| before Newton stops, so "
       "the test decides on the exact step as with none. Needs 'factorization "
       "reuse' > 0.");
+    prm.declare_entry(
+      "projected step extrapolation",
+      "0",
+      Patterns::Integer(0, 10),
+      "[-] A projected Hessian is stiffer than the exact one (its negative "
+      "eigenvalues raised to 0 or above), so its Newton step is too short "
+      "wherever the projection acts and projected Newton crawls. When the "
+      "line search accepts a full step along such a direction, it tries up "
+      "to this many doublings of it while the energy keeps falling (each "
+      "one energy evaluation; the CCD and det F > 0 bounds still apply). 0: "
+      "the paper's line search.");
     prm.declare_entry("log iterations",
                       "false",
                       Patterns::Bool(),
@@ -137,15 +166,18 @@ namespace bfemp
     maximum_newton_iterations = prm.get_integer("maximum Newton iterations");
     linear_solver             = prm.get("linear solver");
     hessian_projection        = prm.get("Hessian projection");
+    eigenvalue_filter         = prm.get("eigenvalue filter");
     cg_tolerance              = prm.get_double("CG tolerance");
     armijo_constant           = prm.get_double("Armijo constant");
     step_bound_fraction       = prm.get_double("step bound fraction");
     maximum_backtracks        = prm.get_integer("maximum backtracks");
     check_invariants          = prm.get_bool("check invariants");
     log_iterations            = prm.get_bool("log iterations");
-    newton_increment          = prm.get("Newton increment");
-    factorization_reuse       = prm.get_integer("factorization reuse");
-    forcing_term              = prm.get("forcing term");
+    projected_step_extrapolation =
+      prm.get_integer("projected step extrapolation");
+    newton_increment    = prm.get("Newton increment");
+    factorization_reuse = prm.get_integer("factorization reuse");
+    forcing_term        = prm.get("forcing term");
     prm.leave_subsection();
 
     require_input(newton_tolerance > 0.,

@@ -10,6 +10,9 @@
 //    compression toward J -> 0, repeated singular values, exactly the
 //    identity, rotations by pi and (fixed corotated only, neo-Hookean is
 //    not defined there) inverted F;
+//  - the same with negative eigenvalues replaced by their absolute values
+//    (EigenvalueFilter::absolute, Chen et al. 2024): equal to the Jacobi
+//    filter to 1e-8, with eigenvalues |eig(dP/dF)| to 1e-10;
 //  - linear elastic returns its raw tangent for every admissible (E, nu),
 //    including nu < 0 where lambda < 0 in 2D plane strain, and projects
 //    inadmissible moduli like the numerical projection.
@@ -215,7 +218,8 @@ namespace
     const bool   defined_inverted = (material.name() != "neo-Hookean");
     unsigned int n_checked = 0, n_psd = 0, n_indefinite = 0;
     double       worst_jacobi = 0., worst_symmetry = 0., worst_psd = 0.,
-           worst_unchanged = 0.;
+           worst_unchanged = 0., worst_absolute_jacobi = 0.,
+           worst_absolute_values = 0.;
     for (const auto &[kind, F] : deformations<dim>())
       {
         if (determinant(F) <= 0. && !defined_inverted)
@@ -233,6 +237,30 @@ namespace
           deallog << "  " << kind << ": differs from Jacobi by " << error
                   << std::endl;
         worst_jacobi = std::max(worst_jacobi, error);
+
+        // absolute eigenvalues (Chen et al. 2024): the same eigenvectors,
+        // |lambda_m| for each eigenvalue
+        const Tensor<4, dim> P_absolute =
+          material.filtered_first_piola_kirchhoff_derivative(
+            F,
+            EigenvalueFilter::absolute);
+        const double absolute_scale = norm(A);
+        worst_absolute_jacobi =
+          std::max(worst_absolute_jacobi,
+                   norm(P_absolute -
+                        jacobi.filtered(EigenvalueFilter::absolute)) /
+                     absolute_scale);
+        std::vector<double> expected = lapack_eigenvalues(A);
+        for (double &lambda : expected)
+          lambda = std::abs(lambda);
+        std::sort(expected.begin(), expected.end());
+        const std::vector<double> absolute_values =
+          lapack_eigenvalues(P_absolute);
+        for (unsigned int m = 0; m < expected.size(); ++m)
+          worst_absolute_values =
+            std::max(worst_absolute_values,
+                     std::abs(absolute_values[m] - expected[m]) /
+                       expected.back());
 
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
@@ -265,6 +293,15 @@ namespace
                        name + ": a PSD tangent is returned unchanged");
     bfemp_tests::check(n_psd > 0 && n_indefinite > 0,
                        name + ": both PSD and indefinite tangents occur");
+    bfemp_tests::check_below(worst_absolute_jacobi,
+                             1e-8,
+                             name + ": absolute eigenvalues equal the Jacobi "
+                                    "filter: largest difference / |dP/dF|");
+    bfemp_tests::check_below(worst_absolute_values,
+                             1e-10,
+                             name + ": absolute eigenvalues are |eig(dP/dF)| "
+                                    "(LAPACK): largest difference / "
+                                    "|lambda|_max");
   }
 
   template <int dim>

@@ -28,8 +28,13 @@
 #include <bfemp/base/input_error.h>
 #include <bfemp/solver/cholmod_solver.h>
 #include <bfemp/solver/newton_solver.h>
+#include <bfemp/solver/positive_semidefinite.h>
 #include <bfemp/solver/solver_parameters.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "solver_test_scene.h"
@@ -60,17 +65,101 @@ namespace
   solve_with(bfemp_tests::FemScene<dim> &scene,
              const std::string          &projection,
              const std::string          &linear_solver,
-             Vector<double>             &u)
+             Vector<double>             &u,
+             const std::string          &filter        = "clamp",
+             const unsigned int          extrapolation = 0)
   {
     SolverParameters parameters;
-    parameters.newton_tolerance          = tolerance;
-    parameters.maximum_newton_iterations = 200;
-    parameters.linear_solver             = linear_solver;
-    parameters.hessian_projection        = projection;
-    parameters.check_invariants          = true;
+    parameters.eigenvalue_filter            = filter;
+    parameters.projected_step_extrapolation = extrapolation;
+    parameters.newton_tolerance             = tolerance;
+    parameters.maximum_newton_iterations    = 200;
+    parameters.linear_solver                = linear_solver;
+    parameters.hessian_projection           = projection;
+    parameters.check_invariants             = true;
     NewtonSolver<dim> newton(parameters);
     u.reinit(scene.dofs.n_dofs());
     return newton.minimize(scene.potential, u, 1., "static block");
+  }
+
+  /** Ascending eigenvalues of a symmetric matrix (LAPACK's dgeev). */
+  std::vector<double>
+  eigenvalues(const FullMatrix<double> &matrix)
+  {
+    LAPACKFullMatrix<double> lapack(matrix.m(), matrix.n());
+    lapack = matrix;
+    lapack.compute_eigenvalues();
+    std::vector<double> values(matrix.m());
+    for (unsigned int m = 0; m < values.size(); ++m)
+      values[m] = lapack.eigenvalue(m).real();
+    std::sort(values.begin(), values.end());
+    return values;
+  }
+
+  /**
+   * filter_eigenvalues() on symmetric matrices of the contact stencils'
+   * sizes, indefinite and rank deficient: the eigenvalues become max(l, 0)
+   * (clamp) or |l| (absolute) of LAPACK's, on the same eigenvectors (the
+   * result commutes with the matrix).
+   */
+  void
+  check_filter_eigenvalues()
+  {
+    bfemp_tests::RandomNumbers random(20261128);
+    double                     worst_values = 0., worst_commutator = 0.;
+    for (const unsigned int n : {3u, 6u, 12u, 24u})
+      for (const unsigned int rank : {n, n / 2})
+        {
+          // A = sum of rank terms s_k v_k v_k^T with signs of both kinds
+          FullMatrix<double> A(n, n);
+          for (unsigned int k = 0; k < rank; ++k)
+            {
+              Vector<double> v(n);
+              for (unsigned int i = 0; i < n; ++i)
+                v[i] = random.uniform(-1., 1.);
+              const double weight = (k % 3 == 0 ? -1. : 1.) *
+                                    std::pow(10., random.uniform(-3., 3.));
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  A(i, j) += weight * v[i] * v[j];
+            }
+          const std::vector<double> values = eigenvalues(A);
+          const double              largest =
+            std::max(std::abs(values.front()), std::abs(values.back()));
+          for (const EigenvalueFilter filter :
+               {EigenvalueFilter::clamp, EigenvalueFilter::absolute})
+            {
+              FullMatrix<double> F(A);
+              filter_eigenvalues(F, filter);
+              std::vector<double> expected(n, 0.);
+              for (unsigned int m = 0; m < values.size(); ++m)
+                expected[m] = filtered_eigenvalue(values[m], filter);
+              std::sort(expected.begin(), expected.end());
+              const std::vector<double> filtered_values = eigenvalues(F);
+              for (unsigned int m = 0; m < n; ++m)
+                worst_values =
+                  std::max(worst_values,
+                           std::abs(filtered_values[m] - expected[m]) /
+                             largest);
+              FullMatrix<double> AF(n, n), FA(n, n);
+              A.mmult(AF, F);
+              F.mmult(FA, A);
+              AF.add(-1., FA);
+              worst_commutator =
+                std::max(worst_commutator,
+                         AF.frobenius_norm() / (largest * largest));
+            }
+        }
+    bfemp_tests::check_below(worst_values,
+                             1e-12,
+                             "filter_eigenvalues: clamp and absolute give "
+                             "max(l, 0) and |l| of LAPACK's eigenvalues l: "
+                             "largest difference / |l|_max");
+    bfemp_tests::check_below(worst_commutator,
+                             1e-12,
+                             "filter_eigenvalues: the result commutes with the "
+                             "matrix (same eigenvectors): |AF - FA| / "
+                             "|l|_max^2");
   }
 
   template <int dim>
@@ -180,8 +269,33 @@ namespace
     check(cg.iterations < always.iterations &&
             cg.projected_hessians < cg.iterations,
           what + "CG AMG (descent check) uses the exact Hessian too");
+    // The other eigenvalue filters and the extrapolated projected steps.
+    Vector<double> u_absolute, u_adaptive, u_extrapolated, u_extrapolated_exact;
+    const NewtonStatistics absolute =
+      solve_with(scene, "always", "CHOLMOD", u_absolute, "absolute");
+    const NewtonStatistics adaptive =
+      solve_with(scene, "always", "CHOLMOD", u_adaptive, "adaptive");
+    const NewtonStatistics extrapolated =
+      solve_with(scene, "always", "CHOLMOD", u_extrapolated, "clamp", 3);
+    const NewtonStatistics extrapolated_exact = solve_with(scene,
+                                                           "when indefinite",
+                                                           "CHOLMOD",
+                                                           u_extrapolated_exact,
+                                                           "clamp",
+                                                           3);
+    deallog << what << "NewtonSolver iterations with 'always': clamp "
+            << always.iterations << ", absolute " << absolute.iterations
+            << ", adaptive " << adaptive.iterations
+            << ", clamp with 3 extrapolations " << extrapolated.iterations
+            << "; 'when indefinite' with 3 extrapolations "
+            << extrapolated_exact.iterations << std::endl;
+    check(extrapolated_exact.iterations == when_indefinite.iterations,
+          what + "extrapolation leaves exact Newton steps alone");
     for (const auto &[name, v] :
-         {std::make_pair("always", &u_always),
+         {std::make_pair("absolute", &u_absolute),
+          std::make_pair("adaptive", &u_adaptive),
+          std::make_pair("extrapolated", &u_extrapolated),
+          std::make_pair("always", &u_always),
           std::make_pair("when indefinite", &u_exact_solver),
           std::make_pair("UMFPACK", &u_umfpack),
           std::make_pair("CG AMG", &u_cg)})
@@ -201,6 +315,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bfemp_tests::initlog();
+  check_filter_eigenvalues();
   // A stubby block (0.25 x 0.5 (x 0.5) m) compressed by 0.1 E, where the
   // neo-Hookean rotation modes turn indefinite.
   run<2>(0.25, 0.5, 0.0625, -0.1);

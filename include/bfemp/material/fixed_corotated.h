@@ -79,8 +79,9 @@ namespace bfemp
      * and so the tangent itself, is not differentiable.
      */
     Tensor<4, dim>
-    projected_first_piola_kirchhoff_derivative(
-      const Tensor<2, dim> &F) const override;
+    filtered_first_piola_kirchhoff_derivative(
+      const Tensor<2, dim>  &F,
+      const EigenvalueFilter filter) const override;
 
     /** "fixed corotated". */
     std::string

@@ -58,8 +58,9 @@ namespace bfemp
      * + max(2 mu + dim lambda, 0) vec(I) vec(I)^T / dim.
      */
     Tensor<4, dim>
-    projected_first_piola_kirchhoff_derivative(
-      const Tensor<2, dim> &F) const override;
+    filtered_first_piola_kirchhoff_derivative(
+      const Tensor<2, dim>  &F,
+      const EigenvalueFilter filter) const override;
 
     /** "linear elastic". */
     std::string
@@ -71,6 +72,9 @@ namespace bfemp
 
     /** Its PSD projection, equal to #tangent for admissible moduli. */
     Tensor<4, dim> projected_tangent;
+
+    /** With |eigenvalues|, equal to #tangent for admissible moduli. */
+    Tensor<4, dim> absolute_tangent;
   };
 } // namespace bfemp
 

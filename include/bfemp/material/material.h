@@ -1,6 +1,8 @@
 #ifndef bfemp_material_material_h
 #define bfemp_material_material_h
 
+#include <bfemp/material/tangent_projection.h>
+
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -57,11 +59,22 @@ namespace bfemp
     /**
      * The positive semi-definite projection of dP/dF at F (projected
      * Newton, BFEMP Section 5): the nearest PSD tensor in the Frobenius
-     * norm. The default eigen-decomposes dP/dF numerically
+     * norm: filtered_first_piola_kirchhoff_derivative() with
+     * EigenvalueFilter::clamp.
+     */
+    Tensor<4, dim>
+    projected_first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const;
+
+    /**
+     * dP/dF at F with its negative eigenvalues replaced as @p filter says
+     * (clamp: projected_first_piola_kirchhoff_derivative(); absolute: their
+     * absolute values). The default eigen-decomposes dP/dF numerically
      * (TangentProjection); materials with a known eigen-system override it.
      */
     virtual Tensor<4, dim>
-    projected_first_piola_kirchhoff_derivative(const Tensor<2, dim> &F) const;
+    filtered_first_piola_kirchhoff_derivative(
+      const Tensor<2, dim>  &F,
+      const EigenvalueFilter filter) const;
 
     /**
      * dP/dF at F, or its positive semi-definite projection if @p projected:
@@ -69,6 +82,10 @@ namespace bfemp
      */
     Tensor<4, dim>
     tangent(const Tensor<2, dim> &F, const bool projected) const;
+
+    /** dP/dF at F after @p filter (none: dP/dF itself). */
+    Tensor<4, dim>
+    tangent(const Tensor<2, dim> &F, const EigenvalueFilter filter) const;
 
     /**
      * dim (2 mu + |lambda|) [Pa]: the size of the terms an energy density

@@ -73,8 +73,9 @@ namespace bfemp
      * at a fraction of its cost. Requires det F > 0 (debug-mode check).
      */
     Tensor<4, dim>
-    projected_first_piola_kirchhoff_derivative(
-      const Tensor<2, dim> &F) const override;
+    filtered_first_piola_kirchhoff_derivative(
+      const Tensor<2, dim>  &F,
+      const EigenvalueFilter filter) const override;
 
     /** "neo-Hookean". */
     std::string

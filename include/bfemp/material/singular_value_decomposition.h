@@ -1,6 +1,8 @@
 #ifndef bfemp_material_singular_value_decomposition_h
 #define bfemp_material_singular_value_decomposition_h
 
+#include <bfemp/material/tangent_projection.h>
+
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -74,7 +76,8 @@ namespace bfemp
    * tensors are read. Where H is positive definite (the common case) the
    * scaling block is assembled from the Cholesky factor of H instead of its
    * eigenvectors, which is cheaper and gives the same (unprojected) block.
-   * The result sum_m max(lambda_m, 0) q_m q_m^T uses index order (i, j, k, l)
+   * The result sum_m max(lambda_m, 0) q_m q_m^T (or, with @p filter
+   * absolute, sum_m |lambda_m| q_m q_m^T) uses index order (i, j, k, l)
    * of dP_ij / dF_kl, as Material::first_piola_kirchhoff_derivative(), and is
    * exactly symmetric.
    */
@@ -84,7 +87,8 @@ namespace bfemp
     const SingularValueDecomposition<dim> &svd,
     const SymmetricTensor<2, dim>         &singular_value_hessian,
     const SymmetricTensor<2, dim>         &twist_eigenvalues,
-    const SymmetricTensor<2, dim>         &flip_eigenvalues);
+    const SymmetricTensor<2, dim>         &flip_eigenvalues,
+    const EigenvalueFilter                 filter = EigenvalueFilter::clamp);
 } // namespace bfemp
 
 #endif

@@ -10,6 +10,38 @@ namespace bfemp
   using namespace dealii;
 
   /**
+   * What replaces the negative eigenvalues of a local Hessian (a material
+   * tangent dP/dF, a contact stencil's Hessian) so that it is positive
+   * semi-definite, or none of that.
+   */
+  enum class EigenvalueFilter
+  {
+    /** The exact matrix, possibly indefinite. */
+    none,
+    /**
+     * Negative eigenvalues set to 0: the nearest PSD matrix in the Frobenius
+     * norm, the projected Newton of BFEMP Section 5.
+     */
+    clamp,
+    /**
+     * Negative eigenvalues replaced by their absolute values (Chen et al.,
+     * "Trust-region eigenvalue filtering for projected Newton", SIGGRAPH
+     * Asia 2024): the direction of negative curvature keeps a curvature of
+     * the same size instead of none, which a clamped model overshoots along.
+     */
+    absolute
+  };
+
+  /** The eigenvalue lambda after @p filter (clamp or absolute). */
+  inline double
+  filtered_eigenvalue(const double lambda, const EigenvalueFilter filter)
+  {
+    if (lambda >= 0. || filter == EigenvalueFilter::none)
+      return lambda;
+    return filter == EigenvalueFilter::absolute ? -lambda : 0.;
+  }
+
+  /**
    * Projection of a material tangent dP/dF onto the positive semi-definite
    * cone, the building block of projected Newton (BFEMP Section 5): each
    * quadrature point's tangent is projected before the chain rule, so every
@@ -34,6 +66,13 @@ namespace bfemp
     /** The projected tangent sum_m max(lambda_m, 0) q_m q_m^T. */
     Tensor<4, dim>
     projected() const;
+
+    /**
+     * sum_m f(lambda_m) q_m q_m^T with f the @p filter's
+     * (filtered_eigenvalue()).
+     */
+    Tensor<4, dim>
+    filtered(const EigenvalueFilter filter) const;
 
     /** Eigenvalues in ascending order. */
     const std::array<double, n> &

@@ -1,6 +1,7 @@
 #ifndef bfemp_solver_energy_term_h
 #define bfemp_solver_energy_term_h
 
+#include <bfemp/material/tangent_projection.h>
 #include <bfemp/solver/node_sparsity.h>
 
 #include <deal.II/lac/sparse_matrix.h>
@@ -30,8 +31,30 @@ namespace bfemp
      * indefinite. Terms that are approximations anyway (lagged friction)
      * add the same matrix as for projected.
      */
-    exact
+    exact,
+    /**
+     * Every local Hessian with its negative eigenvalues replaced by their
+     * absolute values before assembly (Chen et al., SIGGRAPH Asia 2024):
+     * positive semi-definite like projected, but a direction of negative
+     * curvature keeps a curvature of its size instead of none.
+     */
+    absolute
   };
+
+  /** How the local Hessians of @p kind filter their eigenvalues. */
+  inline EigenvalueFilter
+  eigenvalue_filter(const HessianKind kind)
+  {
+    switch (kind)
+      {
+        case HessianKind::exact:
+          return EigenvalueFilter::none;
+        case HessianKind::absolute:
+          return EigenvalueFilter::absolute;
+        default:
+          return EigenvalueFilter::clamp;
+      }
+  }
 
 
 

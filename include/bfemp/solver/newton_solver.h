@@ -152,7 +152,8 @@ namespace bfemp
     /** `solver/log iterations`: one line on stdout for the iteration just
      *  done (@p factorized: its direction came from a new factorization;
      *  @p cg_iterations: those of its solves with an older one;
-     *  @p projected: it fell back to the projected Hessian). */
+     *  @p kind: the Hessian its direction came from; @p model_ratio: the
+     *  actual over the predicted decrease of the energy). */
     void
     log_iteration(const std::string      &step_label,
                   const NewtonStatistics &statistics,
@@ -163,7 +164,17 @@ namespace bfemp
                   const double            forcing,
                   const bool              factorized,
                   const unsigned int      cg_iterations,
-                  const bool              projected) const;
+                  const HessianKind       kind,
+                  const double            model_ratio) const;
+
+    /**
+     * 'eigenvalue filter = adaptive': the projected Hessian for the next
+     * iteration from the model ratio rho of the last one (after Chen et
+     * al., SIGGRAPH Asia 2024): absolute eigenvalues below rho = 0.25,
+     * clamped ones above 0.75, the last choice between.
+     */
+    static HessianKind
+    next_filter(const HessianKind current, const double model_ratio);
 
     /**
      * Moves the constrained components of @p u towards their targets and
@@ -205,7 +216,23 @@ namespace bfemp
                 const double                     slope,
                 Vector<double>                  &trial,
                 double                          &trial_energy,
+                const bool                       projected,
                 NewtonStatistics                &statistics) const;
+
+    /**
+     * `solver/projected step extrapolation`: from the accepted full step
+     * along a projected-Hessian direction @p p (at @p trial, energy
+     * @p trial_energy), doubles the step while E falls and 2 t stays below
+     * @p bound; returns the step taken and updates @p trial and
+     * @p trial_energy.
+     */
+    double
+    extrapolate(const IncrementalPotential<dim> &potential,
+                const Vector<double>            &u,
+                const Vector<double>            &p,
+                const double                     bound,
+                Vector<double>                  &trial,
+                double                          &trial_energy) const;
 
     /**
      * `solver/factorization reuse` > 0: solves H p = -g by conjugate

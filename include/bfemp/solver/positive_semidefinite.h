@@ -1,6 +1,8 @@
 #ifndef bfemp_solver_positive_semidefinite_h
 #define bfemp_solver_positive_semidefinite_h
 
+#include <bfemp/material/tangent_projection.h>
+
 #include <deal.II/lac/full_matrix.h>
 
 namespace bfemp
@@ -15,6 +17,14 @@ namespace bfemp
    */
   void
   project_to_positive_semidefinite(FullMatrix<double> &matrix);
+
+  /**
+   * Replaces the negative eigenvalues of the symmetric matrix as @p filter
+   * says (clamp: project_to_positive_semidefinite(); absolute: their
+   * absolute values; none: no change).
+   */
+  void
+  filter_eigenvalues(FullMatrix<double> &matrix, const EigenvalueFilter filter);
 } // namespace bfemp
 
 #endif

@@ -28,6 +28,12 @@ namespace bfemp
      * is positive definite, the projected one otherwise.
      */
     std::string hessian_projection = "when indefinite";
+    /**
+     * What the projected Hessian does with negative local eigenvalues:
+     * "clamp" (set to 0, the paper's), "absolute" (|lambda|) or
+     * "adaptive" (NewtonSolver::next_filter()).
+     */
+    std::string eigenvalue_filter = "clamp";
     /** Relative residual of CG with AMG. */
     double cg_tolerance = 1e-10;
     /** Sufficient-decrease constant c of E(x + tp) <= E(x) + c t g.p. */
@@ -40,6 +46,11 @@ namespace bfemp
     bool check_invariants = false;
     /** `solver/log iterations`: one line per Newton iteration. */
     bool log_iterations = false;
+    /**
+     * Doublings of a full step along a projected-Hessian direction tried
+     * while E keeps falling (0: none).
+     */
+    unsigned int projected_step_extrapolation = 0;
     /** `solver/Newton increment`: "unknowns" (||p||_inf, the paper) or
      *  "material points" (FEM nodes and particles' u_p and h dF_p). */
     std::string newton_increment = "unknowns";
