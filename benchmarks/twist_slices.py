@@ -50,11 +50,17 @@ SCENES = os.path.join(ROOT, "prm", "experiments", "6_7_twist")
 # runs on one thread unless it says otherwise, so that variants compare on
 # a machine with other load too. "baseline" is the scene with the paper's
 # Newton (Algorithm 1 as written, the increment over the unknowns).
-# No variant inherits the scene's own 'factorization reuse' unless it names it.
+# No variant inherits the scene's own 'factorization reuse' or 'projected step
+# extrapolation' unless it names it.
 PAPER = {"Newton increment": "unknowns", "factorization reuse": "0",
-         "forcing term": "none", "Hessian projection": "when indefinite"}
+         "forcing term": "none", "Hessian projection": "when indefinite",
+         "projected step extrapolation": "0"}
 MATERIAL = {"Newton increment": "material points", "factorization reuse": "0",
-            "forcing term": "none", "Hessian projection": "when indefinite"}
+            "forcing term": "none", "Hessian projection": "when indefinite",
+            "projected step extrapolation": "0"}
+# Entries that builds before commit 06376d9 reject: --baseline-build runs
+# without them (their behaviour there is that of the values above).
+NEWER_ENTRIES = {"projected step extrapolation", "eigenvalue filter"}
 VARIANTS = {
     "baseline": {"contact": {"friction pass tolerance factor": "1"},
                  "solver": PAPER},
@@ -105,11 +111,26 @@ TIMES = ["assembly_time", "factorization_time", "solve_time",
          "line_search_time"]
 
 
-def write_prm(folder, scene, name, end_time, changes):
+def scene_without(folder, scene, entries):
+    """A copy of the scene's prm file without the lines that set @p entries,
+    for a build that does not know them."""
+    path = os.path.join(folder, scene + "_older_build.prm")
+    with open(os.path.join(SCENES, scene + ".prm")) as original:
+        kept = [line for line in original
+                if not (line.strip().startswith("set ") and
+                        line.strip()[4:].split("=")[0].strip() in entries)]
+    with open(path, "w") as copy:
+        copy.writelines(kept)
+    return path
+
+
+def write_prm(folder, scene, name, end_time, changes, drop=frozenset()):
     run = {"name": name, "end time": f"{end_time:.6g}", "quiet": "true",
            "threads": "1"}
     run.update(changes.get("run", {}))
-    lines = [f"include {os.path.join(SCENES, scene + '.prm')}"]
+    scene_path = (scene_without(folder, scene, drop) if drop else
+                  os.path.join(SCENES, scene + ".prm"))
+    lines = [f"include {scene_path}"]
     sections = dict(changes)
     sections["run"] = run
     sections["output"] = {"directory": folder, "interval": "100",
@@ -117,7 +138,8 @@ def write_prm(folder, scene, name, end_time, changes):
     sections["output"].update(changes.get("output", {}))
     for section, entries in sections.items():
         lines.append(f"subsection {section}")
-        lines += [f"  set {key} = {value}" for key, value in entries.items()]
+        lines += [f"  set {key} = {value}" for key, value in entries.items()
+                  if key not in drop]
         lines.append("end")
     path = os.path.join(folder, name + ".prm")
     with open(path, "w") as prm:
@@ -168,13 +190,15 @@ def run_measured(command, folder):
     return usage
 
 
-def run(binary, folder, scene, name, steps, changes, start=0., prefix=None):
+def run(binary, folder, scene, name, steps, changes, start=0., prefix=None,
+        drop=frozenset()):
     if prefix is not None:
         # the variant continues the run to `start` in a copy of its folder
         shutil.copytree(prefix, os.path.join(folder, name))
         changes = dict(changes)
         changes["checkpoint"] = {"resume": "true"}
-    path = write_prm(folder, scene, name, start + steps * 1e-2, changes)
+    path = write_prm(folder, scene, name, start + steps * 1e-2, changes,
+                     drop)
     clock = time.perf_counter()
     usage = run_measured([binary, path], folder)
     wall = time.perf_counter() - clock
@@ -248,8 +272,10 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         for label, binary, variant in jobs:
             name = label.replace(" ", "_").replace("(", "").replace(")", "")
+            older = label == "baseline (other build)"
             runs[label] = run(binary, folder, args.scene, name, args.steps,
-                              VARIANTS[variant], args.start, prefix)
+                              VARIANTS[variant], args.start, prefix,
+                              NEWER_ENTRIES if older else frozenset())
             runs[label]["changes"] = VARIANTS[variant]
             r = runs[label]
             print(f"{label}: {r['wall time [s]']:.1f} s wall, "

@@ -319,10 +319,14 @@ namespace bfemp
   NewtonSolver<dim>::next_filter(const HessianKind current,
                                  const double      model_ratio)
   {
-    // A ratio well below 1: the model was too flat along the step, which
-    // clamping negative curvature to 0 gives; well above 1: too curved,
-    // which absolute values give near a minimizer whose exact Hessian is
-    // positive definite. The band between keeps the last choice, so that
+    // Called after an iteration that used the filtered Hessian (its exact
+    // iterations say nothing about the filter). The filtered model is at
+    // least as curved as the exact one, so rho is usually near or above 1.
+    // Well below 1, the energy rose faster than the model along the step
+    // (the barrier's higher derivatives, or curvature that clamping to 0
+    // dropped): absolute values keep that curvature, so the next step is
+    // shorter. Well above 1 the model was too curved: clamping is the
+    // flatter of the two. The band between keeps the last choice, so that
     // the model does not flip every iteration.
     if (model_ratio < 0.25)
       return HessianKind::absolute;
@@ -580,7 +584,6 @@ namespace bfemp
                                             inexact,
                                             direction,
                                             statistics);
-        const HessianKind filtered_kind_used = filtered_kind;
         if (!exact)
           {
             newton_direction(potential,
@@ -623,8 +626,6 @@ namespace bfemp
             ? (trial_energy - energy) /
                 (model_step * slope * (1. - 0.5 * model_step))
             : 0.;
-        if (parameters.eigenvalue_filter == "adaptive")
-          filtered_kind = next_filter(filtered_kind, model_ratio);
         if (step > 0.)
           {
             u.swap(trial);
@@ -653,8 +654,10 @@ namespace bfemp
                         inexact.forcing,
                         statistics.factorizations > factorizations_before,
                         statistics.cg_iterations - cg_iterations_before,
-                        exact ? HessianKind::exact : filtered_kind_used,
+                        exact ? HessianKind::exact : filtered_kind,
                         model_ratio);
+        if (!exact && parameters.eigenvalue_filter == "adaptive")
+          filtered_kind = next_filter(filtered_kind, model_ratio);
         if (statistics.residual < stop_at && progress == 1.)
           break;
         if (step == 0. && !(statistics.residual < stop_at))

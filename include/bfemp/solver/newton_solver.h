@@ -169,8 +169,8 @@ namespace bfemp
 
     /**
      * 'eigenvalue filter = adaptive': the projected Hessian for the next
-     * iteration from the model ratio rho of the last one (after Chen et
-     * al., SIGGRAPH Asia 2024): absolute eigenvalues below rho = 0.25,
+     * iteration from the model ratio rho of the last one that used it (after
+     * Chen et al., SIGGRAPH Asia 2024): absolute eigenvalues below rho = 0.25,
      * clamped ones above 0.75, the last choice between.
      */
     static HessianKind
