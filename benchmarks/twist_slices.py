@@ -29,7 +29,9 @@ on one thread once in contact; twist_medium_mu0_2: 4096 particles, 2-4 s).
 build folder (e.g. a worktree of an earlier commit built the same way; its
 RUNPATH must name its own libbfemp.so, so build it in place rather than copy
 it) and records it as "baseline (other build)"; the ratios are taken against
-it when "baseline" itself is not among the variants. Writes
+it when "baseline" itself is not among the variants (without either, against
+"full": the full-resolution prm files' solver settings, which the "full_*"
+variants change one lever at a time). Writes
 benchmarks/results/twist_slices_<scene>.json (see doc/performance.md).
 """
 
@@ -50,17 +52,28 @@ SCENES = os.path.join(ROOT, "prm", "experiments", "6_7_twist")
 # runs on one thread unless it says otherwise, so that variants compare on
 # a machine with other load too. "baseline" is the scene with the paper's
 # Newton (Algorithm 1 as written, the increment over the unknowns).
-# No variant inherits the scene's own 'factorization reuse' or 'projected step
-# extrapolation' unless it names it.
+# No variant inherits the scene's own 'factorization reuse', 'projected step
+# extrapolation' or 'skip failed exact factorizations' unless it names it.
 PAPER = {"Newton increment": "unknowns", "factorization reuse": "0",
          "forcing term": "none", "Hessian projection": "when indefinite",
-         "projected step extrapolation": "0"}
+         "projected step extrapolation": "0",
+         "skip failed exact factorizations": "false"}
 MATERIAL = {"Newton increment": "material points", "factorization reuse": "0",
             "forcing term": "none", "Hessian projection": "when indefinite",
-            "projected step extrapolation": "0"}
-# Entries that builds before commit 06376d9 reject: --baseline-build runs
+            "projected step extrapolation": "0",
+            "skip failed exact factorizations": "false"}
+# Entries that builds before commit 06376d9 (or 2026-11-28's) reject: --baseline-build runs
 # without them (their behaviour there is that of the values above).
-NEWER_ENTRIES = {"projected step extrapolation", "eigenvalue filter"}
+NEWER_ENTRIES = {"projected step extrapolation", "eigenvalue filter",
+                 "exact step growth limit", "skip failed exact factorizations"}
+FULL = {"contact": {"friction pass tolerance factor": "100"},
+        "solver": {"Newton increment": "material points",
+                   "factorization reuse": "30",
+                   "forcing term": "Eisenstat-Walker",
+                   "projected step extrapolation": "3",
+                   "skip failed exact factorizations": "false"}}
+SKIP = {"skip failed exact factorizations": "true"}
+GROWTH4 = {"exact step growth limit": "4"}
 VARIANTS = {
     "baseline": {"contact": {"friction pass tolerance factor": "1"},
                  "solver": PAPER},
@@ -106,6 +119,16 @@ VARIANTS = {
                                     "forcing term": "Eisenstat-Walker",
                                     "Hessian projection": "always"}),
         "run": {"threads": "2"}},
+    # The full-resolution prm files' settings of 2026-11-28 before they set
+    # 'skip failed exact factorizations' (on the medium and reduced scenes
+    # too, which leave them at their defaults), and single levers on top.
+    "full": FULL,
+    "full_skip": {"contact": FULL["contact"],
+                  "solver": dict(FULL["solver"], **SKIP)},
+    "full_growth4": {"contact": FULL["contact"],
+                     "solver": dict(FULL["solver"], **GROWTH4)},
+    "full_skip_growth4": {"contact": FULL["contact"],
+                          "solver": dict(FULL["solver"], **SKIP, **GROWTH4)},
 }
 TIMES = ["assembly_time", "factorization_time", "solve_time",
          "line_search_time"]
@@ -292,9 +315,11 @@ def main():
                     "cpus": os.cpu_count(), "system": platform.platform()},
         "runs": runs,
     }
-    # the ratios against the baseline of this build, or else of the other
+    # the ratios against the baseline of this build, or else of the other,
+    # or else against the scene's own settings
     reference = ("baseline" if "baseline" in runs else
-                 "baseline (other build)" if args.baseline_build else None)
+                 "baseline (other build)" if args.baseline_build else
+                 "full" if "full" in runs else None)
     if reference is not None:
         record["ratios against"] = reference
         base = runs[reference]

@@ -24,6 +24,8 @@ namespace bfemp
     partial_constraint_moves += other.partial_constraint_moves;
     carried_constraint_moves += other.carried_constraint_moves;
     projected_hessians += other.projected_hessians;
+    long_exact_directions += other.long_exact_directions;
+    skipped_exact_factorizations += other.skipped_exact_factorizations;
     factorizations += other.factorizations;
     cg_iterations += other.cg_iterations;
     residual            = other.residual;
@@ -288,7 +290,8 @@ namespace bfemp
                                    const bool              factorized,
                                    const unsigned int      cg_iterations,
                                    const HessianKind       kind,
-                                   const double            model_ratio) const
+                                   const double            model_ratio,
+                                   const double            rejected_exact) const
   {
     std::ostringstream line;
     line << std::setprecision(3) << "  " << step_label << ": iteration "
@@ -304,12 +307,65 @@ namespace bfemp
     // the exact Hessian was not used (with 'when indefinite': it was
     // indefinite or its solve failed, and the factorization count includes
     // the failed attempt)
+    if (rejected_exact > 0.)
+      line << ", exact direction " << rejected_exact
+           << " m/s too long (growth limit)";
     if (kind == HessianKind::projected)
       line << ", projected Hessian";
     else if (kind == HessianKind::absolute)
       line << ", projected Hessian (absolute eigenvalues)";
     line << ", model ratio " << model_ratio;
     std::cout << line.str() << std::endl;
+  }
+
+
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::exact_direction_too_long(
+    const IncrementalPotential<dim> &potential,
+    const Vector<double>            &direction,
+    const double                     dt,
+    const double                     last_move) const
+  {
+    // Newton's moves shrink near the minimizer (quadratically once there);
+    // an exact direction many times longer than the last move follows a
+    // curvature near zero that the line search would cut back by 1/2^k at
+    // one energy evaluation per halving, for a short step.
+    if (!(parameters.exact_step_growth_limit > 0.) || !(last_move > 0.))
+      return 0.;
+    const double length = potential.increment_norm(direction) / dt;
+    return length > parameters.exact_step_growth_limit * last_move ? length
+                                                                   : 0.;
+  }
+
+
+
+  template <int dim>
+  bool
+  NewtonSolver<dim>::skip_exact_factorization() const
+  {
+    // The exact Hessian of a contact or compressed scene stays indefinite
+    // over runs of iterations, and each failed attempt costs up to a whole
+    // factorization besides the projected one that follows. After a failure
+    // the next 1, then 2, 4, ... attempts are skipped until one succeeds:
+    // at most log2(n) + 1 failures in n iterations, and the exact Hessian
+    // (quadratic convergence) comes back within twice the length of the
+    // indefinite run.
+    if (!parameters.skip_failed_exact_factorizations || exact_skips_left == 0)
+      return false;
+    --exact_skips_left;
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::record_exact_factorization(const bool succeeded) const
+  {
+    exact_skip_length = succeeded ? 0 : std::max(1u, 2 * exact_skip_length);
+    exact_skips_left  = exact_skip_length;
   }
 
 
@@ -424,6 +480,16 @@ namespace bfemp
                                       Vector<double>            &direction,
                                       NewtonStatistics &statistics) const
   {
+    const bool reuse =
+      parameters.factorization_reuse > 0 && factorization_reusable &&
+      factorized_numbering == potential.dof_space().numbering();
+    const bool skip_factorization =
+      kind == HessianKind::exact && skip_exact_factorization();
+    if (skip_factorization)
+      ++statistics.skipped_exact_factorizations;
+    // nothing to do with the exact Hessian then: not even its assembly
+    if (skip_factorization && !reuse)
+      return false;
     Timer                       timer;
     const SparseMatrix<double> &hessian = potential.hessian(u, kind);
     statistics.assembly_time += timer.wall_time();
@@ -432,8 +498,7 @@ namespace bfemp
     // the linear solver on it hands the iteration to the projected one.
     try
       {
-        if (parameters.factorization_reuse > 0 && factorization_reusable &&
-            factorized_numbering == potential.dof_space().numbering())
+        if (reuse)
           {
             timer.restart();
             bool solved = solve_with_last_factorization(hessian,
@@ -464,6 +529,8 @@ namespace bfemp
             if (solved && -(minus_gradient * direction) < 0.)
               return true;
           }
+        if (skip_factorization)
+          return false;
         timer.restart();
         bool factorized = true;
         ++statistics.factorizations;
@@ -474,6 +541,8 @@ namespace bfemp
         statistics.factorization_time += timer.wall_time();
         factorization_reusable = factorized;
         factorized_numbering   = potential.dof_space().numbering();
+        if (kind == HessianKind::exact)
+          record_exact_factorization(factorized);
         if (!factorized)
           return false;
         timer.restart();
@@ -549,6 +618,10 @@ namespace bfemp
     HessianKind filtered_kind = parameters.eigenvalue_filter == "absolute"
                                   ? HessianKind::absolute
                                   : HessianKind::projected;
+    // ||t p|| / dt of the last accepted iterate ('exact step growth limit')
+    double last_move  = 0.;
+    exact_skip_length = 0;
+    exact_skips_left  = 0;
     while (true)
       {
         if (statistics.iterations == parameters.maximum_newton_iterations)
@@ -576,14 +649,22 @@ namespace bfemp
         // particle or element, a contact distance's curvature): Newton then
         // converges linearly at best. Where the exact sum is positive
         // definite it gives a descent direction with quadratic convergence.
-        const bool exact = parameters.hessian_projection == "when indefinite" &&
-                           newton_direction(potential,
-                                            u,
-                                            gradient,
-                                            HessianKind::exact,
-                                            inexact,
-                                            direction,
-                                            statistics);
+        bool exact = parameters.hessian_projection == "when indefinite" &&
+                     newton_direction(potential,
+                                      u,
+                                      gradient,
+                                      HessianKind::exact,
+                                      inexact,
+                                      direction,
+                                      statistics);
+        const double rejected_exact =
+          exact ? exact_direction_too_long(potential, direction, dt, last_move)
+                : 0.;
+        if (rejected_exact > 0.)
+          {
+            exact = false;
+            ++statistics.long_exact_directions;
+          }
         if (!exact)
           {
             newton_direction(potential,
@@ -631,6 +712,7 @@ namespace bfemp
             u.swap(trial);
             energy = trial_energy;
           }
+        last_move = step * statistics.residual;
         if (parameters.check_invariants)
           {
             statistics.minimum_determinant = potential.minimum_determinant(u);
@@ -655,7 +737,8 @@ namespace bfemp
                         statistics.factorizations > factorizations_before,
                         statistics.cg_iterations - cg_iterations_before,
                         exact ? HessianKind::exact : filtered_kind,
-                        model_ratio);
+                        model_ratio,
+                        rejected_exact);
         if (!exact && parameters.eigenvalue_filter == "adaptive")
           filtered_kind = next_filter(filtered_kind, model_ratio);
         if (statistics.residual < stop_at && progress == 1.)

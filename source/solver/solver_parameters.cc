@@ -134,6 +134,31 @@ namespace bfemp
       "to this many doublings of it while the energy keeps falling (each "
       "one energy evaluation; the CCD and det F > 0 bounds still apply). 0: "
       "the paper's line search.");
+    prm.declare_entry(
+      "exact step growth limit",
+      "0",
+      Patterns::Double(0.),
+      "[-] With 'Hessian projection = when indefinite': an exact-Hessian "
+      "direction longer than this many times the last iteration's accepted "
+      "move (in the Newton increment's norm) is not used, and the iteration "
+      "takes the projected Hessian's. Near the minimizer Newton's moves "
+      "shrink; a direction that grows by much more comes from an exact "
+      "Hessian whose smallest curvature is near zero along it, and the line "
+      "search would cut it to a short, expensive step. 0: no limit, the "
+      "paper's Algorithm 1.");
+    prm.declare_entry(
+      "skip failed exact factorizations",
+      "false",
+      Patterns::Bool(),
+      "[-] With 'Hessian projection = when indefinite': after the exact "
+      "Hessian's factorization has found it indefinite, the next 1, then 2, "
+      "4, ... iterations of the Newton solve do not attempt to factorize it "
+      "(they still try it through CG with the last factorization, with "
+      "'factorization reuse') and factorize the projected one directly, "
+      "until an attempt succeeds. A failed attempt costs up to a whole "
+      "factorization, and the exact Hessian of a contact or compressed scene "
+      "often stays indefinite over runs of iterations. false: every "
+      "iteration attempts it (the paper's Algorithm 1).");
     prm.declare_entry("log iterations",
                       "false",
                       Patterns::Bool(),
@@ -175,6 +200,9 @@ namespace bfemp
     log_iterations            = prm.get_bool("log iterations");
     projected_step_extrapolation =
       prm.get_integer("projected step extrapolation");
+    exact_step_growth_limit = prm.get_double("exact step growth limit");
+    skip_failed_exact_factorizations =
+      prm.get_bool("skip failed exact factorizations");
     newton_increment    = prm.get("Newton increment");
     factorization_reuse = prm.get_integer("factorization reuse");
     forcing_term        = prm.get("forcing term");

@@ -67,16 +67,20 @@ namespace
              const std::string          &linear_solver,
              Vector<double>             &u,
              const std::string          &filter        = "clamp",
-             const unsigned int          extrapolation = 0)
+             const unsigned int          extrapolation = 0,
+             const double                growth_limit  = 0.,
+             const bool                  skip_failed   = false)
   {
     SolverParameters parameters;
-    parameters.eigenvalue_filter            = filter;
-    parameters.projected_step_extrapolation = extrapolation;
-    parameters.newton_tolerance             = tolerance;
-    parameters.maximum_newton_iterations    = 200;
-    parameters.linear_solver                = linear_solver;
-    parameters.hessian_projection           = projection;
-    parameters.check_invariants             = true;
+    parameters.skip_failed_exact_factorizations = skip_failed;
+    parameters.exact_step_growth_limit          = growth_limit;
+    parameters.eigenvalue_filter                = filter;
+    parameters.projected_step_extrapolation     = extrapolation;
+    parameters.newton_tolerance                 = tolerance;
+    parameters.maximum_newton_iterations        = 200;
+    parameters.linear_solver                    = linear_solver;
+    parameters.hessian_projection               = projection;
+    parameters.check_invariants                 = true;
     NewtonSolver<dim> newton(parameters);
     u.reinit(scene.dofs.n_dofs());
     return newton.minimize(scene.potential, u, 1., "static block");
@@ -291,10 +295,68 @@ namespace
             << extrapolated_exact.iterations << std::endl;
     check(extrapolated_exact.iterations == when_indefinite.iterations,
           what + "extrapolation leaves exact Newton steps alone");
+    // 'exact step growth limit': Newton's moves here shrink by 0.066, 0.015,
+    // 4e-5 from one iteration to the next; at a limit of 0.01 the exact
+    // direction of the second iteration is set aside, and those after the
+    // projected moves (linear convergence) too. At 1e6 none is.
+    Vector<double>         u_limited, u_unlimited;
+    const NewtonStatistics limited   = solve_with(scene,
+                                                "when indefinite",
+                                                "CHOLMOD",
+                                                u_limited,
+                                                "clamp",
+                                                0,
+                                                0.01);
+    const NewtonStatistics unlimited = solve_with(scene,
+                                                  "when indefinite",
+                                                  "CHOLMOD",
+                                                  u_unlimited,
+                                                  "clamp",
+                                                  0,
+                                                  1e6);
+    deallog << what << "'when indefinite' with exact step growth limit 0.01: "
+            << limited.iterations << " iterations, "
+            << limited.long_exact_directions << " exact directions set aside"
+            << std::endl;
+    check(limited.long_exact_directions > 0 &&
+            limited.long_exact_directions <= limited.projected_hessians,
+          what + "growth limit 0.01 sets exact directions aside, and the "
+                 "projected Hessian takes those iterations");
+    check(unlimited.iterations == when_indefinite.iterations &&
+            unlimited.long_exact_directions == 0,
+          what + "growth limit 1e6 leaves Newton as it was");
+    // 'skip failed exact factorizations': the exact Hessian of the block
+    // stays positive definite, so nothing is skipped and Newton is as
+    // before (tests/experiments/twist_projected_extrapolation has a scene
+    // where it is indefinite).
+    Vector<double>         u_skipping;
+    const NewtonStatistics skipping = solve_with(scene,
+                                                 "when indefinite",
+                                                 "CHOLMOD",
+                                                 u_skipping,
+                                                 "clamp",
+                                                 0,
+                                                 0.,
+                                                 true);
+    deallog << what << "'when indefinite': " << when_indefinite.iterations
+            << " iterations, " << when_indefinite.projected_hessians
+            << " projected, " << when_indefinite.factorizations
+            << " factorizations; skipping failed exact factorizations: "
+            << skipping.iterations << " iterations, "
+            << skipping.projected_hessians << " projected, "
+            << skipping.factorizations << " factorizations, "
+            << skipping.skipped_exact_factorizations << " skipped" << std::endl;
+    check(skipping.skipped_exact_factorizations == 0 &&
+            skipping.iterations == when_indefinite.iterations &&
+            skipping.factorizations == when_indefinite.factorizations,
+          what + "with a positive definite exact Hessian, skipping failed "
+                 "exact factorizations changes nothing");
     for (const auto &[name, v] :
-         {std::make_pair("absolute", &u_absolute),
+         {std::make_pair("skip failed exact factorizations", &u_skipping),
+          std::make_pair("absolute", &u_absolute),
           std::make_pair("adaptive", &u_adaptive),
           std::make_pair("extrapolated", &u_extrapolated),
+          std::make_pair("growth limit 0.01", &u_limited),
           std::make_pair("always", &u_always),
           std::make_pair("when indefinite", &u_exact_solver),
           std::make_pair("UMFPACK", &u_umfpack),

@@ -34,6 +34,12 @@ namespace bfemp
      * 'Hessian projection = always', the fall-backs with 'when indefinite'.
      */
     unsigned int projected_hessians = 0;
+    /** Of those, the iterations whose exact direction the 'exact step
+     *  growth limit' set aside. */
+    unsigned int long_exact_directions = 0;
+    /** Iterations that left out the exact Hessian's factorization after a
+     *  failed one ('skip failed exact factorizations'). */
+    unsigned int skipped_exact_factorizations = 0;
     /** Factorizations of a Newton iteration's Hessian (fewer than the
      *  iterations with `solver/factorization reuse`, more where a fall-back
      *  refactorizes; the constraint moves' response solves not counted). */
@@ -153,7 +159,8 @@ namespace bfemp
      *  done (@p factorized: its direction came from a new factorization;
      *  @p cg_iterations: those of its solves with an older one;
      *  @p kind: the Hessian its direction came from; @p model_ratio: the
-     *  actual over the predicted decrease of the energy). */
+     *  actual over the predicted decrease of the energy; @p rejected_exact:
+     *  the length of an exact direction the growth limit set aside, or 0). */
     void
     log_iteration(const std::string      &step_label,
                   const NewtonStatistics &statistics,
@@ -165,7 +172,31 @@ namespace bfemp
                   const bool              factorized,
                   const unsigned int      cg_iterations,
                   const HessianKind       kind,
-                  const double            model_ratio) const;
+                  const double            model_ratio,
+                  const double            rejected_exact) const;
+
+    /**
+     * 'exact step growth limit': the length ||p|| / dt of an exact-Hessian
+     * @p direction that exceeds the limit times @p last_move (the last
+     * accepted ||t p|| / dt), else 0 (also without a limit or a last move).
+     */
+    double
+    exact_direction_too_long(const IncrementalPotential<dim> &potential,
+                             const Vector<double>            &direction,
+                             const double                     dt,
+                             const double                     last_move) const;
+
+    /**
+     * 'skip failed exact factorizations': whether this iteration leaves out
+     * the exact Hessian's factorization (counting the skip).
+     */
+    bool
+    skip_exact_factorization() const;
+
+    /** Updates the back-off of skip_exact_factorization() after an
+     *  attempt to factorize the exact Hessian. */
+    void
+    record_exact_factorization(const bool succeeded) const;
 
     /**
      * 'eigenvalue filter = adaptive': the projected Hessian for the next
@@ -258,6 +289,10 @@ namespace bfemp
     mutable unsigned int factorized_numbering   = 0;
     /** Eisenstat-Walker's state: ||g_k-1||. */
     mutable double last_gradient_norm = 0.;
+    /** 'skip failed exact factorizations': the exact-Hessian factorizations
+     *  skipped after the last failed one, and those still to skip. */
+    mutable unsigned int exact_skip_length = 0;
+    mutable unsigned int exact_skips_left  = 0;
   };
 } // namespace bfemp
 

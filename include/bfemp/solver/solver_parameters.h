@@ -51,6 +51,16 @@ namespace bfemp
      * while E keeps falling (0: none).
      */
     unsigned int projected_step_extrapolation = 0;
+    /**
+     * An exact direction longer than this times the last accepted move is
+     * replaced by the projected one (0: never).
+     */
+    double exact_step_growth_limit = 0.;
+    /**
+     * After a failed factorization of the exact Hessian, skip the next 1,
+     * 2, 4, ... attempts until one succeeds (within a Newton solve).
+     */
+    bool skip_failed_exact_factorizations = false;
     /** `solver/Newton increment`: "unknowns" (||p||_inf, the paper) or
      *  "material points" (FEM nodes and particles' u_p and h dF_p). */
     std::string newton_increment = "unknowns";
