@@ -17,6 +17,11 @@
 //    iterations and factorizations (measured at the time of writing: 529
 //    against 554 iterations, 26 against 51 projected, 114 against 166
 //    factorizations);
+//  The paper's-line-search run's counts are printed to the test log, not
+//  compared: on one machine CHOLMOD finds one exact Hessian of that run
+//  indefinite that another machine's BLAS kernels factorize (166 against
+//  167 factorizations, 51 against 52 projected iterations, the same Newton
+//  iterations and end state); the check below holds on both.
 //  - 'skip failed exact factorizations' on top: the same end state, no more
 //    Newton iterations and fewer factorizations (529 iterations, 99 against
 //    114 factorizations: the exact attempts it skips would have failed).
@@ -38,7 +43,7 @@ main()
                                "  set factorization reuse = 10\n"
                                "  set forcing term = Eisenstat-Walker\n";
   const Run         paper =
-    run_variant(scene, "paper_line_search", settings + "end\n", end);
+    run_variant(scene, "paper_line_search", settings + "end\n", end, false);
   const Run extrapolated =
     run_variant(scene,
                 "extrapolated",
@@ -52,8 +57,7 @@ main()
                   "  set skip failed exact factorizations = true\nend\n",
                 end);
 
-  for (const auto &[name, run] : {std::make_pair("paper_line_search", &paper),
-                                  std::make_pair("extrapolated", &extrapolated),
+  for (const auto &[name, run] : {std::make_pair("extrapolated", &extrapolated),
                                   std::make_pair("skipping", &skipping)})
     deallog << name << ": "
             << static_cast<unsigned int>(run->projected_hessians)
@@ -63,19 +67,16 @@ main()
                      "the paper's line search and extrapolated projected "
                      "steps");
   bfemp_tests::check(extrapolated.newton_iterations <= paper.newton_iterations,
-                     "extrapolation takes no more Newton iterations: " +
-                       bfemp_tests::format("%.0f",
-                                           extrapolated.newton_iterations) +
-                       " against " +
-                       bfemp_tests::format("%.0f", paper.newton_iterations));
+                     "extrapolation takes no more Newton iterations than the "
+                     "paper's line search");
+  // Margins rather than the paper's counts: at least 1.3 times the
+  // factorizations and 1.5 times the projected iterations (measured 1.46
+  // and 1.96).
   bfemp_tests::check(
-    extrapolated.projected_hessians < paper.projected_hessians &&
-      extrapolated.factorizations < paper.factorizations,
-    "extrapolation takes fewer projected iterations and factorizations: " +
-      bfemp_tests::format("%.0f", extrapolated.projected_hessians) + " and " +
-      bfemp_tests::format("%.0f", extrapolated.factorizations) + " against " +
-      bfemp_tests::format("%.0f", paper.projected_hessians) + " and " +
-      bfemp_tests::format("%.0f", paper.factorizations));
+    1.5 * extrapolated.projected_hessians <= paper.projected_hessians &&
+      1.3 * extrapolated.factorizations <= paper.factorizations,
+    "extrapolation takes fewer projected iterations and factorizations "
+    "(the paper's line search at least 1.5 and 1.3 times as many)");
   compare_end_states(extrapolated,
                      skipping,
                      "extrapolated projected steps with and without skipped "

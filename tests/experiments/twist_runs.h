@@ -11,6 +11,8 @@
 // minimizer).
 
 #include <algorithm>
+#include <iostream>
+#include <sstream>
 #include <string>
 
 #include "../format.h"
@@ -44,13 +46,19 @@ namespace twist_runs
   /**
    * Runs @p scene as results/<name> with @p changes (prm subsections) on
    * top, one thread, to @p end (end_time unless given); checks that it gets
-   * there with no particle inside the shell.
+   * there with no particle inside the shell. The run's counts go into the
+   * compared output unless @p counts_in_output is false: then they go to
+   * stdout (the ctest log) only, for a run whose path follows a decision
+   * that round-off can flip (CHOLMOD's definiteness test on an exact
+   * Hessian that is singular to working precision gives 166 factorizations
+   * on one machine and 167 on another with the same build).
    */
   inline Run
   run_variant(const std::string &scene,
               const std::string &name,
               const std::string &changes,
-              const double       end = end_time)
+              const double       end              = end_time,
+              const bool         counts_in_output = true)
   {
     write(name + ".prm",
           "include " + scene_prm(scene) +
@@ -87,12 +95,25 @@ namespace twist_runs
         result.projected_hessians += c[4][i];
       }
     result.steps = c[0].size() - 1;
-    deallog << name << ": "
-            << static_cast<unsigned int>(result.newton_iterations)
-            << " Newton iterations, "
-            << static_cast<unsigned int>(result.factorizations)
-            << " factorizations in " << static_cast<unsigned int>(result.steps)
-            << " steps" << std::endl;
+    std::ostringstream counts;
+    counts << name << ": "
+           << static_cast<unsigned int>(result.newton_iterations)
+           << " Newton iterations, "
+           << static_cast<unsigned int>(result.factorizations)
+           << " factorizations in " << static_cast<unsigned int>(result.steps)
+           << " steps";
+    if (counts_in_output)
+      deallog << counts.str() << std::endl;
+    else
+      {
+        std::cout << counts.str() << ", "
+                  << static_cast<unsigned int>(result.projected_hessians)
+                  << " of them with the projected Hessian" << std::endl;
+        deallog << name
+                << ": counts in the test log only (round-off decides one "
+                   "definiteness test on the way)"
+                << std::endl;
+      }
     return result;
   }
 

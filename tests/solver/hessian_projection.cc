@@ -290,9 +290,17 @@ namespace
     deallog << what << "NewtonSolver iterations with 'always': clamp "
             << always.iterations << ", absolute " << absolute.iterations
             << ", adaptive " << adaptive.iterations
-            << ", clamp with 3 extrapolations " << extrapolated.iterations
             << "; 'when indefinite' with 3 extrapolations "
             << extrapolated_exact.iterations << std::endl;
+    // The extrapolated projected steps' count goes to the log only: whether
+    // a doubled step still lowers E is decided at round-off here (16 or 17
+    // in 2D, 14 or 15 in 3D, depending on the machine's BLAS kernels).
+    std::cout << what
+              << "clamp with 3 extrapolations: " << extrapolated.iterations
+              << " iterations" << std::endl;
+    check(extrapolated.iterations <= always.iterations + 2,
+          what + "'always' with 3 extrapolations takes at most 2 iterations "
+                 "more than without");
     check(extrapolated_exact.iterations == when_indefinite.iterations,
           what + "extrapolation leaves exact Newton steps alone");
     // 'exact step growth limit': Newton's moves here shrink by 0.066, 0.015,
