@@ -65,8 +65,10 @@ MATERIAL = {"Newton increment": "material points", "factorization reuse": "0",
 # Entries that builds before commit 06376d9 (or 2026-11-28's) reject: --baseline-build runs
 # without them (their behaviour there is that of the values above).
 NEWER_ENTRIES = {"projected step extrapolation", "eigenvalue filter",
-                 "exact step growth limit", "skip failed exact factorizations"}
-FULL = {"contact": {"friction pass tolerance factor": "100"},
+                 "exact step growth limit", "skip failed exact factorizations",
+                 "friction pass mollifier factor"}
+FULL = {"contact": {"friction pass tolerance factor": "100",
+                    "friction pass mollifier factor": "1"},
         "solver": {"Newton increment": "material points",
                    "factorization reuse": "30",
                    "forcing term": "Eisenstat-Walker",
@@ -129,6 +131,16 @@ VARIANTS = {
                      "solver": dict(FULL["solver"], **GROWTH4)},
     "full_skip_growth4": {"contact": FULL["contact"],
                           "solver": dict(FULL["solver"], **SKIP, **GROWTH4)},
+    # The prm files' settings of 2026-11-28 (with the skip) and the friction
+    # passes before the last on a widened mollifier (G eps_v dt, G / 10, ...)
+    "full_skip_mollifier100": {
+        "contact": dict(FULL["contact"],
+                        **{"friction pass mollifier factor": "100"}),
+        "solver": dict(FULL["solver"], **SKIP)},
+    "full_skip_mollifier1000": {
+        "contact": dict(FULL["contact"],
+                        **{"friction pass mollifier factor": "1000"}),
+        "solver": dict(FULL["solver"], **SKIP)},
 }
 TIMES = ["assembly_time", "factorization_time", "solve_time",
          "line_search_time"]

@@ -82,6 +82,18 @@ namespace bfemp
       "updated, the first Newton increment meets eps_d. 1 solves every pass "
       "to eps_d (Algorithm 1 as written); 100 saved 8-18 % of the Newton "
       "iterations of the twist's compression (doc/experiments/twist.md).");
+    prm.declare_entry(
+      "friction pass mollifier factor",
+      "1",
+      Patterns::Double(),
+      "[-] G >= 1: a step's first friction pass uses the mollifier of eq. 36 "
+      "widened to G eps_v dt ('static friction velocity'), each later pass "
+      "a tenth of the previous factor, never below 1. Like the pass "
+      "tolerance, a widened pass only gives the point at which friction is "
+      "lagged next: the step ends only when, in a pass at eps_v itself, "
+      "the first Newton increment meets eps_d, so the answer is the "
+      "lagged friction's fixed point of Algorithm 1. 1 uses eps_v in "
+      "every pass (doc/experiments/twist.md).");
     prm.leave_subsection();
   }
 
@@ -99,6 +111,8 @@ namespace bfemp
       prm.get_integer("maximum friction iterations");
     friction_pass_tolerance_factor =
       prm.get_double("friction pass tolerance factor");
+    friction_pass_mollifier_factor =
+      prm.get_double("friction pass mollifier factor");
     const std::string table = prm.get("friction coefficients");
     prm.leave_subsection();
 
@@ -123,6 +137,12 @@ namespace bfemp
                   to_input_string(friction_pass_tolerance_factor),
                   "must be >= 1 (1: every friction pass solved to the Newton "
                   "tolerance)");
+    require_input(friction_pass_mollifier_factor >= 1.,
+                  "contact",
+                  "friction pass mollifier factor",
+                  to_input_string(friction_pass_mollifier_factor),
+                  "must be >= 1 (1: every friction pass with the mollifier "
+                  "of 'static friction velocity')");
     require_input(default_friction_coefficient >= 0.,
                   "contact",
                   "friction coefficient",

@@ -54,8 +54,20 @@ namespace bfemp
   void
   FrictionTerm<dim>::set_scale(const double s, const double dt)
   {
-    scale     = s;
-    threshold = parameters.static_friction_velocity * dt;
+    scale               = s;
+    unwidened_threshold = parameters.static_friction_velocity * dt;
+    threshold           = mollifier_factor * unwidened_threshold;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionTerm<dim>::set_mollifier_factor(const double g)
+  {
+    Assert(g >= 1., ExcMessage("the mollifier can only be widened"));
+    mollifier_factor = g;
+    threshold        = g * unwidened_threshold;
   }
 
 

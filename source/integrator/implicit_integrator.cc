@@ -527,16 +527,37 @@ namespace bfemp
     last_contact.friction_converged = true;
     double progress                 = 0.;
     // Passes before the last only give the point at which friction is
-    // lagged next ('contact/friction pass tolerance factor').
+    // lagged next ('contact/friction pass tolerance factor' and 'friction
+    // pass mollifier factor'): they may stop early and use a wider
+    // mollifier; the step ends only in a pass at eps_d and eq. 36's eps_v.
     const double eps_d = newton.tolerance();
     double       tolerance =
       with_friction ? contact_parameters.friction_pass_tolerance_factor * eps_d
                           : eps_d;
+    double widening =
+      with_friction ? contact_parameters.friction_pass_mollifier_factor : 1.;
+    // What the step hands on (dissipation, friction forces) is measured
+    // with eps_v itself, however the loop ends (a return or a solver
+    // exception that the caller answers with a smaller step).
+    struct MollifierReset
+    {
+      FrictionTerm<dim> *term;
+      ~MollifierReset()
+      {
+        if (term != nullptr)
+          term->set_mollifier_factor(1.);
+      }
+    } const reset{with_friction ? friction.get() : nullptr};
     for (unsigned int j = 0;; ++j)
       {
         // The last pass allowed is the step's answer.
         if (j == contact_parameters.maximum_friction_iterations)
-          tolerance = eps_d;
+          {
+            tolerance = eps_d;
+            widening  = 1.;
+          }
+        if (with_friction)
+          friction->set_mollifier_factor(widening);
         const NewtonStatistics s =
           newton.minimize(potential,
                           u,
@@ -556,14 +577,15 @@ namespace bfemp
           return;
         // Converged friction (Section 5): with (F, lambda, T) at the
         // current x, the first Newton increment already met eps_d (not
-        // only a looser pass tolerance).
-        if (j > 0 && s.iterations == 1 && s.residual < eps_d)
+        // only a looser pass tolerance), with eps_v itself.
+        if (j > 0 && s.iterations == 1 && s.residual < eps_d && widening == 1.)
           return;
         if (j == contact_parameters.maximum_friction_iterations)
           {
             last_contact.friction_converged = false;
             return;
           }
+        widening                        = std::max(1., 0.1 * widening);
         const unsigned int lagged_pairs = friction->n_pairs();
         friction->update(u);
         ++last_contact.friction_updates;

@@ -35,6 +35,11 @@ namespace bfemp
      *  each later pass stops at a tenth of the previous factor, never below
      *  eps_d. 1 (the default) solves every pass to eps_d. */
     double friction_pass_tolerance_factor = 1.;
+    /** G >= 1: a step's first friction pass lags and minimizes with the
+     *  mollifier widened to G eps_v dt, each later pass with a tenth of
+     *  the previous factor, never below 1; the step ends only in a pass
+     *  at eps_v itself. 1 (the default) is eq. 36 in every pass. */
+    double friction_pass_mollifier_factor = 1.;
 
     /** mu between MPM body @p mpm_body and FEM body @p fem_body. */
     double

@@ -46,6 +46,14 @@ namespace bfemp
     void
     set_scale(const double scale, const double dt);
 
+    /**
+     * Widens the mollifier to g eps_v dt (g >= 1) for the passes of a step
+     * before its last ('contact/friction pass mollifier factor'); 1 is
+     * eq. 36 as written.
+     */
+    void
+    set_mollifier_factor(const double g);
+
     /** Lags lambda, T, beta and the pair set at u (Algorithm 1, lines 5, 9). */
     void
     update(const Vector<double> &u);
@@ -124,8 +132,11 @@ namespace bfemp
     const ContactParameters &parameters;
     double                   scale     = 1.;
     double                   threshold = 1.;
-    std::vector<Pair>        pairs;
-    mutable double           last_magnitude = 0.;
+    /** eps_v dt, the threshold at mollifier factor 1. */
+    double            unwidened_threshold = 1.;
+    double            mollifier_factor    = 1.;
+    std::vector<Pair> pairs;
+    mutable double    last_magnitude = 0.;
     /** A friction pair's clique was new to the barrier's registry. */
     mutable bool couplings_grew = false;
   };
