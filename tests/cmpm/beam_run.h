@@ -21,7 +21,7 @@ namespace bfemp_tests
   {
     {
       std::ofstream prm(name + ".prm");
-      prm << "include " << SOURCE_DIR << "/../../prm/cmpm/beam_2d.prm\n"
+      prm << "include " << BFEMP_SOURCE_DIR << "/prm/cmpm/beam_2d.prm\n"
           << "subsection run\n  set name = " << name
           << "\n  set quiet = true\nend\n"
           << "subsection output\n  set directory = results\n"

@@ -200,7 +200,7 @@ main(int argc, char **argv)
 
   {
     std::ofstream prm("beam.prm");
-    prm << "include " << SOURCE_DIR << "/../../prm/cmpm/beam_2d.prm\n"
+    prm << "include " << BFEMP_SOURCE_DIR << "/prm/cmpm/beam_2d.prm\n"
         << "subsection run\n  set name = beam\n  set quiet = true\n"
         << "  set end time = 0.05\nend\n"
         << "subsection output\n  set directory = results\n"

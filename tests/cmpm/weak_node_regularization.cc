@@ -200,7 +200,7 @@ namespace
     const std::string prm_name = name + ".prm";
     {
       std::ofstream prm(prm_name);
-      prm << "include " << SOURCE_DIR << "/../../prm/cmpm/beam_2d.prm\n"
+      prm << "include " << BFEMP_SOURCE_DIR << "/prm/cmpm/beam_2d.prm\n"
           << "subsection run\n  set name = " << name
           << "\n  set quiet = true\n  set end time = 0.1\nend\n"
           << "subsection output\n  set directory = results\nend\n"

@@ -49,7 +49,7 @@ namespace
   {
     {
       std::ofstream prm(name + ".prm");
-      prm << "include " << SOURCE_DIR << "/../../prm/" << scene << "\n"
+      prm << "include " << BFEMP_SOURCE_DIR << "/prm/" << scene << "\n"
           << "subsection run\n"
              "  set name    = "
           << name

@@ -25,11 +25,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bfemp_tests::initlog();
 
-  const std::string source_dir = SOURCE_DIR;
+  const std::string source_dir = BFEMP_SOURCE_DIR;
   std::filesystem::remove_all("results");
   {
     std::ofstream prm("default_scene_vtu.prm");
-    prm << "include " << source_dir << "/../../prm/default.prm\n"
+    prm << "include " << source_dir << "/prm/default.prm\n"
         << "subsection run\n"
            "  set end time = 0.05\n"
            "  set quiet    = true\n"
@@ -64,7 +64,7 @@ main(int argc, char **argv)
 
   std::ostringstream command;
   command << std::setprecision(17) << "/usr/bin/python3 " << source_dir
-          << "/read_vtu.py results/default " << particles.n_particles() << ' '
+          << "/tests/scenes/read_vtu.py results/default " << particles.n_particles() << ' '
           << mass << ' ' << momentum[0] << ' ' << momentum[1]
           << " > read_vtu.log 2>&1";
   const int status = std::system(command.str().c_str());

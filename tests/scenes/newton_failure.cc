@@ -42,7 +42,7 @@ main(int argc, char **argv)
   std::filesystem::remove_all("results");
   {
     std::ofstream prm("newton_failure.prm");
-    prm << "include " << SOURCE_DIR << "/../../prm/demo_implicit.prm\n"
+    prm << "include " << BFEMP_SOURCE_DIR << "/prm/demo_implicit.prm\n"
         << "subsection run\n"
            "  set name     = newton_failure\n"
            "  set end time = 0.2\n"

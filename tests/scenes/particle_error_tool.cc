@@ -34,8 +34,8 @@ using namespace dealii;
 
 namespace
 {
-  const std::string tool = std::string("/usr/bin/python3 ") + SOURCE_DIR +
-                           "/../../doc/experiments/particle_error.py";
+  const std::string tool = std::string("/usr/bin/python3 ") + BFEMP_SOURCE_DIR +
+                           "/doc/experiments/particle_error.py";
 
   /** Runs the block scene with @p entries appended. */
   void

@@ -42,7 +42,7 @@ namespace
   {
     {
       std::ofstream prm(name + ".prm");
-      prm << "include " << SOURCE_DIR << "/../../prm/demo_contact.prm\n"
+      prm << "include " << BFEMP_SOURCE_DIR << "/prm/demo_contact.prm\n"
           << "subsection run\n"
              "  set name     = "
           << name

@@ -103,7 +103,7 @@ main(int argc, char **argv)
   std::filesystem::remove_all("results");
   {
     std::ofstream prm("thread_independence.prm");
-    prm << "include " << SOURCE_DIR << "/../../prm/default.prm\n"
+    prm << "include " << BFEMP_SOURCE_DIR << "/prm/default.prm\n"
         << "subsection run\n"
            "  set end time = 0.1\n"
            "  set quiet    = true\n"
