@@ -54,7 +54,8 @@ main(int argc, char **argv)
 
   std::filesystem::remove_all("scenes");
   std::filesystem::create_directories("scenes");
-  std::filesystem::copy_file(BFEMP_SOURCE_DIR "/tests/fem/square.msh", "scenes/box.msh");
+  std::filesystem::copy_file(BFEMP_SOURCE_DIR "/tests/fem/square.msh",
+                             "scenes/box.msh");
   std::filesystem::copy_file(BFEMP_SOURCE_DIR "/tests/fem/square.msh",
                              "local.msh",
                              std::filesystem::copy_options::overwrite_existing);

@@ -64,9 +64,9 @@ main(int argc, char **argv)
 
   std::ostringstream command;
   command << std::setprecision(17) << "/usr/bin/python3 " << source_dir
-          << "/tests/scenes/read_vtu.py results/default " << particles.n_particles() << ' '
-          << mass << ' ' << momentum[0] << ' ' << momentum[1]
-          << " > read_vtu.log 2>&1";
+          << "/tests/scenes/read_vtu.py results/default "
+          << particles.n_particles() << ' ' << mass << ' ' << momentum[0] << ' '
+          << momentum[1] << " > read_vtu.log 2>&1";
   const int status = std::system(command.str().c_str());
 
   std::ifstream log("read_vtu.log");
