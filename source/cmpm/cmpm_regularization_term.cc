@@ -1,8 +1,10 @@
 #include <bfemp/cmpm/cmpm_regularization_term.h>
+#include <bfemp/solver/node_blocks.h>
 
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <numeric>
 
 namespace bfemp
 {
@@ -199,16 +201,33 @@ namespace bfemp
                                            SparseMatrix<double> &hessian,
                                            const HessianKind) const
   {
-    // the matrix of build_element(), per component: PSD as it is
+    // the matrix of build_element(), per component: PSD as it is. Its
+    // blocks s_kl I go in through add_node_blocks (one walk per row, the
+    // nodes in ascending order) instead of one sparsity look-up per entry.
+    thread_local std::vector<unsigned int> order;
+    thread_local std::vector<unsigned int> sorted;
     for (const Element &element : elements)
       {
         const unsigned int n = element.nodes.size();
-        for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int l = 0; l < n; ++l)
+        order.resize(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](unsigned int k, unsigned int l) {
+                    return element.nodes[k] < element.nodes[l];
+                  });
+        sorted.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          sorted[i] = element.nodes[order[i]];
+        add_node_blocks<dim>(
+          sorted,
+          [&](const unsigned int i, const unsigned int j) {
+            Tensor<2, dim> block;
             for (unsigned int c = 0; c < dim; ++c)
-              hessian.add(dim * element.nodes[k] + c,
-                          dim * element.nodes[l] + c,
-                          element.stiffness(k, l));
+              block[c][c] = element.stiffness(order[i], order[j]);
+            return block;
+          },
+          hessian);
       }
   }
 

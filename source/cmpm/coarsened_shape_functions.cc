@@ -17,20 +17,20 @@ namespace bfemp
     , control(grid.n_elements_total())
     , bound(grid.n_elements_total(), 0.)
   {
-    const unsigned int r = grid.n_local_nodes();
     boundary_rank.assign(grid.n_fine(), -1);
-    int n_boundary = 0;
     for (unsigned int k = 0; k < grid.n_fine(); ++k)
       if (grid.interior_index(k) < 0)
-        boundary_rank[k] = n_boundary++;
-    psi_dense.assign(n_boundary * r, 0.);
+        {
+          boundary_rank[k] = boundary_fine.size();
+          boundary_fine.push_back(k);
+        }
     for (unsigned int k = 0; k < grid.n_fine(); ++k)
       {
         double row_sum = 0.;
         for (const auto &[I, weight] : psi.row(k))
           {
+            AssertIndexRange(I, grid.n_local_nodes());
             row_sum += std::abs(weight);
-            psi_dense[boundary_rank[k] * r + I] = weight;
           }
         boundary_bound = std::max(boundary_bound, row_sum);
       }
@@ -353,15 +353,17 @@ namespace bfemp
     const unsigned int n_interior        = coarse_grid.n_interior_fine();
 
     // p has two kinds of rows (eq. 31): psi_kI I on the boundary fine nodes
-    // and dense blocks on the interior ones. K_alpha = p^T G with G = K p.
-    // G's boundary columns are a sparse loop over K's blocks (K has few
-    // nonzero blocks per row), its interior columns and p^T G are matrix
-    // products by BLAS on scalar matrices: row a of fine node k is row
-    // dim k + a, column b of coarse node J is column dim J + b. BLAS is
-    // column-major, so a row-major matrix is passed as its transpose.
-    // Rows of G: the interior fine nodes first (by interior index), then
-    // the boundary ones (by boundary rank, psi_dense's rows); rows of fine
-    // nodes not in @p nodes stay zero.
+    // and dense blocks on the interior ones. K_alpha = p^T K p is
+    // formed as W + W^T, W = p^T G, G = U p (U: below).
+    // The parts of K p and p^T G through the boundary rows of p are sparse
+    // sums (K has few nonzero blocks per row, psi few entries per row);
+    // those through the interior rows are matrix products by BLAS on
+    // scalar matrices: row a of fine node k is row dim k + a, column b of
+    // coarse node J is column dim J + b. BLAS is column-major, so a
+    // row-major matrix is passed as its transpose. Rows of G: the interior
+    // fine nodes first (by interior index), then the boundary ones (by
+    // boundary rank); rows of fine nodes not in @p nodes stay zero.
+    Assert(std::is_sorted(nodes.begin(), nodes.end()), ExcInternalError());
     const std::size_t                      cols = dim * r;
     thread_local std::vector<unsigned int> row;
     row.resize(m);
@@ -392,38 +394,61 @@ namespace bfemp
     thread_local std::vector<double> G_node;
     K_interior.assign(dim * n_rows * dim * n_interior, 0.);
     G.assign(dim * n_rows * cols, 0.);
-    thread_local std::vector<std::array<unsigned int, dim>> index;
-    index.resize(m);
+    // K = U + U^T with U the upper blocks, the diagonal ones halved, so
+    // p^T K p = W + W^T with W = p^T U p: only the upper blocks are read,
+    // along their rows (the lower ones, read as transposes, were a strided
+    // walk through the m x m blocks, which miss the cache). Fine nodes more
+    // than two apart in a direction share no knot span, so node i couples
+    // only with the 5^dim nodes around it: they are visited through a
+    // position map of the patch in increasing node number (the order of
+    // @p nodes, which is sorted), not by testing all m^2 pairs.
+    const unsigned int            n_1d = coarse_grid.n_fine_1d();
+    thread_local std::vector<int> position;
+    position.assign(n_rows, -1);
     for (unsigned int i = 0; i < m; ++i)
-      index[i] = coarse_grid.fine_multi_index(nodes[i]);
+      position[nodes[i]] = i;
     constexpr unsigned int block = dim * dim;
     for (unsigned int i = 0; i < m; ++i)
       {
         G_node.assign(r * block, 0.);
         double *K_row = &K_interior[dim * row[i] * dim * n_interior];
-        for (unsigned int j = 0; j < m; ++j)
+        const std::array<unsigned int, dim> index =
+          coarse_grid.fine_multi_index(nodes[i]);
+        unsigned int lower[dim], extent[dim], n_neighbours = 1;
+        for (unsigned int d = 0; d < dim; ++d)
           {
-            // blocks of fine nodes more than two apart are zero
-            bool couples = true;
+            lower[d]  = index[d] >= 2 ? index[d] - 2 : 0;
+            extent[d] = std::min(index[d] + 2, n_1d - 1) - lower[d] + 1;
+            n_neighbours *= extent[d];
+          }
+        for (unsigned int t = 0; t < n_neighbours; ++t)
+          {
+            // t's digits, the first direction fastest: k increases with t
+            unsigned int k = 0, stride = 1, rest = t;
             for (unsigned int d = 0; d < dim; ++d)
-              couples = couples && std::abs(static_cast<int>(index[i][d]) -
-                                            static_cast<int>(index[j][d])) <= 2;
-            if (!couples)
-              continue;
-            // K_ij from the upper blocks (K symmetric)
-            const Tensor<2, dim> K_ij =
-              i <= j ? upper[i * m + j] : transpose(upper[j * m + i]);
+              {
+                k += (lower[d] + rest % extent[d]) * stride;
+                rest /= extent[d];
+                stride *= n_1d;
+              }
+            const int j = position[k];
+            if (j < static_cast<int>(i))
+              continue; // not in @p nodes, or a lower block
+            // U_ij
+            const double          factor = j == static_cast<int>(i) ? 0.5 : 1.;
+            const Tensor<2, dim> &K_ij   = upper[i * m + j];
             if (row[j] < n_interior)
               for (unsigned int a = 0; a < dim; ++a)
                 for (unsigned int b = 0; b < dim; ++b)
-                  K_row[a * dim * n_interior + dim * row[j] + b] = K_ij[a][b];
+                  K_row[a * dim * n_interior + dim * row[j] + b] =
+                    factor * K_ij[a][b];
             else
               {
                 double K[block];
                 for (unsigned int a = 0; a < dim; ++a)
                   for (unsigned int b = 0; b < dim; ++b)
-                    K[a * dim + b] = K_ij[a][b];
-                for (const auto &[J, weight] : psi.row(nodes[j]))
+                    K[a * dim + b] = factor * K_ij[a][b];
+                for (const auto &[J, weight] : psi.row(k))
                   {
                     double *G_J = &G_node[J * block];
                     for (unsigned int c = 0; c < block; ++c)
@@ -479,26 +504,25 @@ namespace bfemp
          C.data(),
          &n_cols);
     // ... and coarse_(I a),. += sum_k psi_kI G_(k a),. over the boundary
-    // rows, for each component a: rows dim k + a of G and dim I + a of
-    // coarse, both strided by dim rows
-    const types::blas_int n_boundary = n_rows - n_interior, n_coarse = r,
-                          stride = dim * cols;
-    for (unsigned int a = 0; a < dim; ++a)
-      gemm("N",
-           "T",
-           &n_cols,
-           &n_coarse,
-           &n_boundary,
-           &one,
-           &G[(dim * n_interior + a) * cols],
-           &stride,
-           psi_dense.data(),
-           &n_coarse,
-           &one,
-           &C[a * cols],
-           &stride);
+    // rows k. psi has a few entries per row (the face B-splines of one
+    // fine node), so this is a sparse sum of contiguous rows of G.
+    const types::blas_int unit = 1;
+    for (unsigned int b = 0; b < boundary_fine.size(); ++b)
+      {
+        const unsigned int k = boundary_fine[b];
+        if (position[k] < 0)
+          continue; // a zero row of G
+        for (const auto &[I, weight] : psi.row(k))
+          for (unsigned int a = 0; a < dim; ++a)
+            axpy(&n_cols,
+                 &weight,
+                 &G[(dim * (n_interior + b) + a) * cols],
+                 &unit,
+                 &C[(dim * I + a) * cols],
+                 &unit);
+      }
 
-    // p^T K p is symmetric; make it so to the last bit (the upper blocks
+    // p^T K p = W + W^T, symmetric to the last bit (the upper blocks
     // mirrored), as the assembled Hessian of the other terms is
     coarse.resize(r * r);
     for (unsigned int I = 0; I < r; ++I)
@@ -507,7 +531,8 @@ namespace bfemp
           Tensor<2, dim> &block = coarse[I * r + J];
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int b = 0; b < dim; ++b)
-              block[a][b] = C[(dim * I + a) * cols + dim * J + b];
+              block[a][b] = C[(dim * I + a) * cols + dim * J + b] +
+                            C[(dim * J + b) * cols + dim * I + a];
           coarse[J * r + I] = transpose(block);
         }
   }

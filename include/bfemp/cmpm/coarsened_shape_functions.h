@@ -157,7 +157,9 @@ namespace bfemp
     /**
      * The condensed stiffness K_IJ = sum_kl p_kI^T K_kl p_lJ (seed 002's
      * K_alpha = p_alpha^T K p_alpha) of the fine blocks K_kl between the
-     * fine nodes @p nodes: the block of nodes[i] and nodes[j] for i <= j is
+     * fine nodes @p nodes (in increasing order, so that the sums run in one
+     * order whatever the caller): the block of nodes[i] and nodes[j] for i <= j
+     * is
      * @p upper[i * m + j] (m = nodes.size()), K symmetric. Blocks of fine
      * nodes more than two apart in a direction share no knot span and are
      * skipped. @p coarse receives all r x r blocks, coarse[I * r + J].
@@ -182,12 +184,10 @@ namespace bfemp
     /** The largest absolute row sum of psi over the boundary fine nodes. */
     double boundary_bound = 0.;
     /** Rank of each fine node among the boundary fine nodes, -1 for an
-     *  interior one: the row of psi_dense. */
+     *  interior one: its row of condense()'s G after the interior ones. */
     std::vector<int> boundary_rank;
-    /** psi_kI of the boundary fine nodes as a dense row-major matrix (one
-     *  row per boundary rank, r columns): the operand of condense()'s
-     *  matrix products. The same for every element. */
-    std::vector<double> psi_dense;
+    /** The boundary fine nodes by rank (boundary_rank's inverse). */
+    std::vector<unsigned int> boundary_fine;
 
     /** Builds element @p element's control and bound from its particles. */
     void
