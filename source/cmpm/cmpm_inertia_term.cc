@@ -216,6 +216,7 @@ namespace bfemp
       thread_local std::vector<int>                                   position;
       thread_local std::vector<unsigned int>                          nodes;
       thread_local std::vector<Tensor<2, dim>>                        upper;
+      thread_local std::vector<char>                                  coupled;
       thread_local std::vector<typename CoarseGrid<dim>::FineStencil> stencils;
       thread_local std::vector<double>                                masses;
       stencils.clear();
@@ -238,6 +239,7 @@ namespace bfemp
           }
       const std::size_t m = nodes.size();
       upper.assign(m * m, Tensor<2, dim>());
+      coupled.assign(m * m, 1); // all of upper is set
       for (unsigned int p = 0; p < stencils.size(); ++p)
         {
           const auto &B = stencils[p];
@@ -253,7 +255,7 @@ namespace bfemp
                   upper[i * m + j][a][a] += m_BB;
               }
         }
-      element.add_stiffness(nodes, upper, hessian);
+      element.add_stiffness(nodes, upper, coupled, hessian);
     });
   }
 

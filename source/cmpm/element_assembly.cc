@@ -86,10 +86,11 @@ namespace bfemp
   CmpmElementAssembly<dim>::add_stiffness(
     const std::vector<unsigned int>   &fine_nodes,
     const std::vector<Tensor<2, dim>> &upper,
+    const std::vector<char>           &coupled,
     SparseMatrix<double>              &hessian) const
   {
     thread_local std::vector<Tensor<2, dim>> coarse;
-    phi.condense(element, fine_nodes, upper, coarse);
+    phi.condense(element, fine_nodes, upper, coupled, coarse);
     const std::size_t r = local_unknowns.size();
     add_node_blocks<dim>(
       valid_unknowns,

@@ -160,14 +160,17 @@ namespace bfemp
      * fine nodes @p nodes (in increasing order, so that the sums run in one
      * order whatever the caller): the block of nodes[i] and nodes[j] for i <= j
      * is
-     * @p upper[i * m + j] (m = nodes.size()), K symmetric. Blocks of fine
-     * nodes more than two apart in a direction share no knot span and are
-     * skipped. @p coarse receives all r x r blocks, coarse[I * r + J].
+     * @p upper[i * m + j] (m = nodes.size()), K symmetric, read only where
+     * @p coupled[i * m + j] is nonzero (the others are zero blocks). Blocks
+     * of fine nodes more than two apart in a direction share no knot span
+     * and are skipped. @p coarse receives all r x r blocks,
+     * coarse[I * r + J].
      */
     void
     condense(const std::size_t                  element,
              const std::vector<unsigned int>   &nodes,
              const std::vector<Tensor<2, dim>> &upper,
+             const std::vector<char>           &coupled,
              std::vector<Tensor<2, dim>>       &coarse) const;
 
     /** p_i of an active element, control[i * r + I] (BoundaryInteriorMap). */
@@ -188,6 +191,10 @@ namespace bfemp
     std::vector<int> boundary_rank;
     /** The boundary fine nodes by rank (boundary_rank's inverse). */
     std::vector<unsigned int> boundary_fine;
+    /** The rows of condense()'s G that K_interior p_interior reaches: the
+     *  interior fine nodes and the boundary ones numbered below the last
+     *  interior one. */
+    unsigned int n_rows_coupled_to_interior = 0;
 
     /** Builds element @p element's control and bound from its particles. */
     void

@@ -59,11 +59,13 @@ namespace bfemp
 
     /**
      * hessian += p^T K p with the fine blocks of CoarsenedShapeFunctions::
-     * condense() (the upper blocks between @p fine_nodes).
+     * condense() (the upper blocks between @p fine_nodes, those that
+     * @p coupled marks).
      */
     void
     add_stiffness(const std::vector<unsigned int>   &fine_nodes,
                   const std::vector<Tensor<2, dim>> &upper,
+                  const std::vector<char>           &coupled,
                   SparseMatrix<double>              &hessian) const;
 
     /** The unknowns (unified nodes) of the element's coarse nodes. */
