@@ -5,7 +5,6 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -106,15 +105,28 @@ namespace bfemp
     for (unsigned int q = 0; q < n_stencil; ++q)
       g[q] = F_T * stencil.gradient[q];
 
-    // The boundary part mapped to the coarse nodes: G_I = sum_l g_l psi_lI.
-    std::vector<Tensor<1, dim>> G(r);
-    std::vector<bool>           touched(r, false);
+    // The boundary part mapped to the coarse nodes: G_I = sum_l g_l psi_lI,
+    // for the coarse nodes the stencil's boundary nodes reach (kept per
+    // thread: this runs for every particle in every step)
+    thread_local std::vector<Tensor<1, dim>> G;
+    thread_local std::vector<char>           is_touched;
+    thread_local std::vector<unsigned int>   touched;
+    G.resize(r);
+    is_touched.resize(r, 0);
+    touched.clear();
     for (unsigned int q = 0; q < n_stencil; ++q)
       for (const auto &[I, weight] : psi.row(stencil.node[q]))
         {
+          if (is_touched[I] == 0)
+            {
+              is_touched[I] = 1;
+              touched.push_back(I);
+              G[I] = Tensor<1, dim>();
+            }
           G[I] += weight * g[q];
-          touched[I] = true;
         }
+    for (const unsigned int I : touched)
+      is_touched[I] = 0;
 
     for (unsigned int q = 0; q < n_stencil; ++q)
       {
@@ -139,11 +151,10 @@ namespace bfemp
               for (unsigned int c = 0; c < dim; ++c)
                 K_i(dim * i + a, dim * j + c) += T[a][c] * g[m];
           }
-        for (unsigned int I = 0; I < r; ++I)
-          if (touched[I])
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int c = 0; c < dim; ++c)
-                R(dim * i + a, dim * I + c) += T[a][c] * G[I];
+        for (const unsigned int I : touched)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int c = 0; c < dim; ++c)
+              R(dim * i + a, dim * I + c) += T[a][c] * G[I];
       }
   }
 

@@ -17,24 +17,6 @@ namespace bfemp
     , control(grid.n_elements_total())
     , bound(grid.n_elements_total(), 0.)
   {
-    boundary_rank.assign(grid.n_fine(), -1);
-    for (unsigned int k = 0; k < grid.n_fine(); ++k)
-      if (grid.interior_index(k) < 0)
-        {
-          boundary_rank[k] = boundary_fine.size();
-          boundary_fine.push_back(k);
-        }
-    // The fine nodes up to the last interior one: U_ij (node i <= node j)
-    // with j interior needs node i below it (condense()).
-    unsigned int last_interior = 0;
-    for (unsigned int k = 0; k < grid.n_fine(); ++k)
-      if (grid.interior_index(k) >= 0)
-        last_interior = k;
-    n_rows_coupled_to_interior =
-      grid.n_interior_fine() + (std::lower_bound(boundary_fine.begin(),
-                                                 boundary_fine.end(),
-                                                 last_interior) -
-                                boundary_fine.begin());
     for (unsigned int k = 0; k < grid.n_fine(); ++k)
       {
         double row_sum = 0.;
@@ -361,34 +343,30 @@ namespace bfemp
     const std::size_t m = nodes.size();
     AssertDimension(upper.size(), m * m);
     AssertDimension(coupled.size(), m * m);
+    Assert(std::is_sorted(nodes.begin(), nodes.end()), ExcInternalError());
     const unsigned int                 r = coarse_grid.n_local_nodes();
     const std::vector<Tensor<2, dim>> &p = control[element];
-    const unsigned int n_interior        = coarse_grid.n_interior_fine();
+    const unsigned int     n_interior    = coarse_grid.n_interior_fine();
+    const std::size_t      cols          = dim * r;
+    constexpr unsigned int block         = dim * dim;
 
-    // p has two kinds of rows (eq. 31): psi_kI I on the boundary fine nodes
-    // and dense blocks on the interior ones. K_alpha = p^T K p is
-    // formed as W + W^T, W = p^T G, G = U p (U: below).
-    // The parts of K p and p^T G through the boundary rows of p are sparse
-    // sums (K has few nonzero blocks per row, psi few entries per row);
-    // those through the interior rows are matrix products by BLAS on
-    // scalar matrices: row a of fine node k is row dim k + a, column b of
-    // coarse node J is column dim J + b. BLAS is column-major, so a
-    // row-major matrix is passed as its transpose. Rows of G: the interior
-    // fine nodes first (by interior index), then the boundary ones (by
-    // boundary rank); rows of fine nodes not in @p nodes stay zero.
-    Assert(std::is_sorted(nodes.begin(), nodes.end()), ExcInternalError());
-    const std::size_t                      cols = dim * r;
-    thread_local std::vector<unsigned int> row;
-    row.resize(m);
-    const unsigned int n_rows = coarse_grid.n_fine();
-    for (unsigned int i = 0; i < m; ++i)
-      {
-        const int interior = coarse_grid.interior_index(nodes[i]);
-        row[i] =
-          interior >= 0 ? interior : n_interior + boundary_rank[nodes[i]];
-      }
-
-    // the interior rows of p, dim n_interior x cols
+    // p has two kinds of rows (eq. 31): the dense blocks P_k on the
+    // interior fine nodes and psi_kI I on the boundary ones. K = U + U^T,
+    // U the upper fine blocks (node i <= node j) with the diagonal ones
+    // halved, so K_alpha = p^T K p = W + W^T with W = p^T U p, and W splits
+    // by the kinds of i and j:
+    //   W = P^T (U_II P + U_IB psi) + (psi^T U_BI) P + psi^T (U_BB psi).
+    // The products with P are BLAS calls on scalar matrices (row a of fine
+    // node k is row dim k + a, column b of coarse node J is column dim J +
+    // b; BLAS is column-major, so a row-major matrix is passed as its
+    // transpose): G_I = U_II P + U_IB psi (dim n_interior x cols),
+    // A = psi^T U_BI (cols x dim n_interior). The parts through psi are
+    // sparse sums over U's nonzero blocks and psi's few entries per row,
+    // one fine node's row of U at a time in a buffer that stays in cache:
+    // a boundary node's row of U_BB psi goes into W straight away, so no
+    // boundary row of U p is ever stored (they were 2/3 of the rows of a
+    // dgemm and the matrix that psi^T was applied to, neither of which
+    // stayed in cache).
     thread_local std::vector<double> p_interior;
     p_interior.resize(dim * n_interior * cols);
     for (unsigned int i = 0; i < n_interior; ++i)
@@ -397,44 +375,26 @@ namespace bfemp
           for (unsigned int b = 0; b < dim; ++b)
             p_interior[(dim * i + a) * cols + dim * J + b] = p[i * r + J][a][b];
 
-    // K's columns of the interior nodes (dim n_rows x dim n_interior), and
-    // G += K_kl psi_lJ for the boundary nodes l. One fine node's rows of G
-    // at a time, summed in a block-major buffer (coarse node, a, b) that
-    // stays in the L1 cache: each psi entry is then one contiguous update
-    // of dim x dim values. Only the first n_rows_coupled_to_interior rows of
-    // K_interior can hold a block (U_ij needs node i <= node j), so the
-    // product with p_interior below runs over those; the rows of G of the
-    // fine nodes in @p nodes are written whole, the others are zero.
-    const unsigned int n_coupled_rows = n_rows_coupled_to_interior;
-    thread_local std::vector<double> K_interior;
-    thread_local std::vector<double> G;
-    thread_local std::vector<double> G_node;
-    K_interior.assign(dim * n_coupled_rows * dim * n_interior, 0.);
-    G.resize(dim * n_rows * cols);
-    // K = U + U^T with U the upper blocks, the diagonal ones halved, so
-    // p^T K p = W + W^T with W = p^T U p: only the upper blocks are read,
-    // along their rows (the lower ones, read as transposes, were a strided
-    // walk through the m x m blocks, which miss the cache). Fine nodes more
-    // than two apart in a direction share no knot span, so node i couples
-    // only with the 5^dim nodes around it: they are visited through a
-    // position map of the patch in increasing node number (the order of
-    // @p nodes, which is sorted), not by testing all m^2 pairs.
+    thread_local std::vector<double> U_II, G_I, A, C, G_node, G_row;
+    const types::blas_int            n_axpy = dim * r, unit = 1;
+    U_II.assign(dim * n_interior * dim * n_interior, 0.);
+    G_I.assign(dim * n_interior * cols, 0.);
+    A.assign(cols * dim * n_interior, 0.);
+    C.assign(cols * cols, 0.);
+    G_row.resize(dim * cols);
+
+    // Fine nodes more than two apart in a direction share no knot span, so
+    // node i couples only with the 5^dim nodes around it: they are visited
+    // through a position map of the patch in increasing node number (the
+    // order of @p nodes), not by testing all m^2 pairs.
     const unsigned int            n_1d = coarse_grid.n_fine_1d();
     thread_local std::vector<int> position;
-    position.assign(n_rows, -1);
+    position.assign(coarse_grid.n_fine(), -1);
     for (unsigned int i = 0; i < m; ++i)
       position[nodes[i]] = i;
-    for (unsigned int k = 0; k < n_rows; ++k)
-      if (position[k] < 0)
-        {
-          const int          interior = coarse_grid.interior_index(k);
-          const unsigned int g_row =
-            interior >= 0 ? interior : n_interior + boundary_rank[k];
-          std::fill_n(&G[dim * g_row * cols], dim * cols, 0.);
-        }
-    constexpr unsigned int block = dim * dim;
     for (unsigned int i = 0; i < m; ++i)
       {
+        const int i_interior = coarse_grid.interior_index(nodes[i]);
         G_node.assign(r * block, 0.);
         const std::array<unsigned int, dim> index =
           coarse_grid.fine_multi_index(nodes[i]);
@@ -459,101 +419,103 @@ namespace bfemp
             // not in @p nodes, a lower block, or one that no particle forms
             if (j < static_cast<int>(i) || coupled[i * m + j] == 0)
               continue;
-            // U_ij
             const double          factor = j == static_cast<int>(i) ? 0.5 : 1.;
-            const Tensor<2, dim> &K_ij   = upper[i * m + j];
-            if (row[j] < n_interior)
-              {
-                Assert(row[i] < n_coupled_rows, ExcInternalError());
-                double *K_row = &K_interior[dim * row[i] * dim * n_interior];
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int b = 0; b < dim; ++b)
-                    K_row[a * dim * n_interior + dim * row[j] + b] =
-                      factor * K_ij[a][b];
-              }
-            else
-              {
-                double K[block];
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int b = 0; b < dim; ++b)
-                    K[a * dim + b] = factor * K_ij[a][b];
-                for (const auto &[J, weight] : psi.row(k))
-                  {
-                    double *G_J = &G_node[J * block];
-                    for (unsigned int c = 0; c < block; ++c)
-                      G_J[c] += weight * K[c];
-                  }
-              }
-          }
-        for (unsigned int a = 0; a < dim; ++a)
-          {
-            double *G_row = &G[(dim * row[i] + a) * cols];
-            for (unsigned int J = 0; J < r; ++J)
+            const Tensor<2, dim> &U_ij   = upper[i * m + j];
+            double                K[block];
+            for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int b = 0; b < dim; ++b)
-                G_row[dim * J + b] = G_node[J * block + a * dim + b];
+                K[a * dim + b] = factor * U_ij[a][b];
+            const int j_interior = coarse_grid.interior_index(k);
+            if (j_interior >= 0 && i_interior >= 0)
+              // U_II
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  U_II[(dim * i_interior + a) * dim * n_interior +
+                       dim * j_interior + b] = K[a * dim + b];
+            else if (j_interior >= 0)
+              // A += psi_i^T U_ij
+              for (const auto &[I, weight] : psi.row(nodes[i]))
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int b = 0; b < dim; ++b)
+                    A[(dim * I + a) * dim * n_interior + dim * j_interior +
+                      b] += weight * K[a * dim + b];
+            else
+              // node i's row of U_.B psi, block-major (coarse node, a, b)
+              for (const auto &[J, weight] : psi.row(k))
+                {
+                  double *G_J = &G_node[J * block];
+                  for (unsigned int c = 0; c < block; ++c)
+                    G_J[c] += weight * K[c];
+                }
           }
+        // node i's row of U_.B psi by scalar rows
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int J = 0; J < r; ++J)
+            for (unsigned int b = 0; b < dim; ++b)
+              G_row[a * cols + dim * J + b] = G_node[J * block + a * dim + b];
+        if (i_interior >= 0)
+          // its rows of G_I (U_IB psi)
+          std::copy(G_row.begin(), G_row.end(), &G_I[dim * i_interior * cols]);
+        else
+          // W += psi_i^T (U_BB psi)_i, contiguous rows of C (BLAS axpy:
+          // its vector kernels, where the compiler's baseline has none)
+          for (const auto &[I, weight] : psi.row(nodes[i]))
+            for (unsigned int a = 0; a < dim; ++a)
+              axpy(&n_axpy,
+                   &weight,
+                   &G_row[a * cols],
+                   &unit,
+                   &C[(dim * I + a) * cols],
+                   &unit);
       }
 
-    // G += K_interior p_interior, i.e. G^T += p_interior^T K_interior^T,
-    // over G's first n_coupled_rows rows
-    const types::blas_int n_cols = cols, n_g_rows = dim * n_coupled_rows,
-                          n_inner = dim * n_interior;
     // ('cmpm/fine nodes per direction' >= 5: at least one interior fine
     // node, so BLAS's leading dimensions are >= 1)
     Assert(n_interior > 0, ExcInternalError());
-    const double                     one = 1.;
-    thread_local std::vector<double> C;
-    C.resize(cols * cols);
+    const types::blas_int n_cols = cols, n_inner = dim * n_interior;
+    const double          one = 1.;
+    // G_I += U_II P, i.e. G_I^T += P^T U_II^T
     gemm("N",
          "N",
          &n_cols,
-         &n_g_rows,
+         &n_inner,
          &n_inner,
          &one,
          p_interior.data(),
          &n_cols,
-         K_interior.data(),
+         U_II.data(),
          &n_inner,
          &one,
-         G.data(),
+         G_I.data(),
          &n_cols);
-    // coarse = p^T G: the interior rows of G (the first dim n_interior),
-    // coarse^T = G_interior^T p_interior, ...
-    const double zero = 0.;
+    // W += P^T G_I, i.e. W^T += G_I^T P
     gemm("N",
          "T",
          &n_cols,
          &n_cols,
          &n_inner,
          &one,
-         G.data(),
+         G_I.data(),
          &n_cols,
          p_interior.data(),
          &n_cols,
-         &zero,
+         &one,
          C.data(),
          &n_cols);
-    // ... and coarse_(I a),. += sum_k psi_kI G_(k a),. over the boundary
-    // rows k. psi has a few entries per row (the face B-splines of one
-    // fine node), so this is a sparse sum of contiguous rows of G. It runs
-    // by psi's rows: each row of G is read once while C stays in the L2
-    // cache (by psi's columns, G, larger than L2, was read once per entry
-    // of psi, and the step took 1.15 times as long).
-    const types::blas_int unit = 1;
-    for (unsigned int b = 0; b < boundary_fine.size(); ++b)
-      {
-        const unsigned int k = boundary_fine[b];
-        if (position[k] < 0)
-          continue; // a zero row of G
-        for (const auto &[I, weight] : psi.row(k))
-          for (unsigned int a = 0; a < dim; ++a)
-            axpy(&n_cols,
-                 &weight,
-                 &G[(dim * (n_interior + b) + a) * cols],
-                 &unit,
-                 &C[(dim * I + a) * cols],
-                 &unit);
-      }
+    // W += A P, i.e. W^T += P^T A^T
+    gemm("N",
+         "N",
+         &n_cols,
+         &n_cols,
+         &n_inner,
+         &one,
+         p_interior.data(),
+         &n_cols,
+         A.data(),
+         &n_inner,
+         &one,
+         C.data(),
+         &n_cols);
 
     // p^T K p = W + W^T, symmetric to the last bit (the upper blocks
     // mirrored), as the assembled Hessian of the other terms is

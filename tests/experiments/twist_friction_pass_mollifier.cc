@@ -21,9 +21,15 @@
 //    move the point at which friction is lagged, not the step's answer;
 //  - the friction forces on the shell at the end agree to 1e-3 of their
 //    size (measured at eps_v in both runs);
-//  - G = 100 takes fewer factorizations (at the time of writing 0.27 of
-//    them here; 0.25 and 0.80 of the wall to t = 2 s,
-//    doc/experiments/twist.md).
+//  - G = 100 takes at most 0.4 of the factorizations (measured 0.27 on
+//    an AMD EPYC VM and 0.26 on an Intel Xeon VM; 0.25 and 0.80 of the wall
+//    to t = 2 s, doc/experiments/twist.md).
+// The runs' counts go to the test log, not to the compared output: the
+// two machines' BLAS kernels give 1186 against 1188 Newton iterations and
+// 264 against 262 factorizations with G = 1, and 1343 against 1341 and 70
+// against 68 with G = 100, from the same build (a definiteness test or an
+// increment test that round-off decides on the way); the checks hold on
+// both.
 
 #include "twist_runs.h"
 
@@ -51,7 +57,8 @@ main()
                               "  set friction pass tolerance factor = 100\n"
                               "  set friction pass mollifier factor = " +
                          G + "\nend\n",
-                       end);
+                       end,
+                       false);
   };
   const Run narrow = run_G("1");
   const Run wide   = run_G("100");
@@ -70,8 +77,10 @@ main()
                            1e-3,
                            "contact force on the shell at the end, G = 100 "
                            "against G = 1: |difference| / |force|");
-  bfemp_tests::check(
-    wide.factorizations < narrow.factorizations,
-    "G = 100 takes fewer factorizations: ratio " +
-      bfemp_tests::format("%.2f", wide.factorizations / narrow.factorizations));
+  const double ratio = wide.factorizations / narrow.factorizations;
+  std::cout << "factorizations, G = 100 against G = 1: "
+            << bfemp_tests::format("%.3f", ratio) << std::endl;
+  bfemp_tests::check(ratio <= 0.4,
+                     "G = 100 takes at most 0.4 of the factorizations of "
+                     "G = 1 (ratio in the test log)");
 }

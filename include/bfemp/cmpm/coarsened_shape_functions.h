@@ -186,15 +186,6 @@ namespace bfemp
     std::vector<double> bound;
     /** The largest absolute row sum of psi over the boundary fine nodes. */
     double boundary_bound = 0.;
-    /** Rank of each fine node among the boundary fine nodes, -1 for an
-     *  interior one: its row of condense()'s G after the interior ones. */
-    std::vector<int> boundary_rank;
-    /** The boundary fine nodes by rank (boundary_rank's inverse). */
-    std::vector<unsigned int> boundary_fine;
-    /** The rows of condense()'s G that K_interior p_interior reaches: the
-     *  interior fine nodes and the boundary ones numbered below the last
-     *  interior one. */
-    unsigned int n_rows_coupled_to_interior = 0;
 
     /** Builds element @p element's control and bound from its particles. */
     void
