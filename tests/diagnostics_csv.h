@@ -12,8 +12,9 @@
 
 namespace bfemp_tests
 {
-  /** The columns @p names of a diagnostics.csv, in that order; a missing
-   *  column fails the test. */
+  /** The columns @p names of a diagnostics.csv (or another CSV file with a
+   *  header row), in that order, as numbers; a missing column fails the
+   *  test. */
   inline std::vector<std::vector<double>>
   read_columns(const std::string &file, const std::vector<std::string> &names)
   {
@@ -39,12 +40,13 @@ namespace bfemp_tests
     std::vector<std::vector<double>> columns(names.size());
     while (std::getline(in, line))
       {
-        std::vector<double> values;
-        std::stringstream   row(line);
+        // only the asked columns are numbers: others may hold labels
+        std::vector<std::string> entries;
+        std::stringstream        row(line);
         for (std::string entry; std::getline(row, entry, ',');)
-          values.push_back(std::stod(entry));
+          entries.push_back(entry);
         for (unsigned int c = 0; c < names.size(); ++c)
-          columns[c].push_back(values[index[c]]);
+          columns[c].push_back(std::stod(entries.at(index[c])));
       }
     return columns;
   }

@@ -47,12 +47,19 @@ PARTICLES_PER_SPAN = 2
 SAG_ROOM = 6.0  # the grid reaches this far below the beam
 
 
-def inclusions():
+LAYOUT_SEED = 2002  # the layout of prm/cmpm/bending_beam_*
+
+
+def inclusions(layout_seed=LAYOUT_SEED):
     """40 ellipses (2D) / elliptic column cross-sections (3D) of varied
     shapes: two rows of 20, one per 1 x 1 m square of the beam's side,
     centres jittered by up to 0.1 m, semi-axes 0.15-0.35 and 0.10-0.30 m,
-    any orientation (fixed seed, so the files are reproducible)."""
-    rng = random.Random(2002)
+    any orientation, drawn from a generator seeded with @p layout_seed (the
+    files are reproducible; cmpm_beam_layouts.py draws other layouts);
+    @p layout_seed None: no inclusion (a homogeneous beam)."""
+    if layout_seed is None:
+        return []
+    rng = random.Random(layout_seed)
     result = []
     for row in range(2):
         for column in range(20):
@@ -110,7 +117,7 @@ end
 """
 
 
-def bending_beam(dim):
+def bending_beam(dim, layout_seed=LAYOUT_SEED):
     depth = "" if dim == 2 else " x 2"
     lower = [-H, -SAG_ROOM] + ([] if dim == 2 else [-H])
     upper = [LENGTH + H, HEIGHT + H] + ([] if dim == 2 else [HEIGHT + H])
@@ -118,12 +125,13 @@ def bending_beam(dim):
     gravity = [0, -25] + ([] if dim == 2 else [0])
     particles = int(LENGTH * HEIGHT**(dim - 1) /
                     (SPAN / PARTICLES_PER_SPAN)**dim + 0.5)
+    regions = inclusions(layout_seed)
     text = f"""# Seed 002 Section 8.1.2 "Comparisons with BSMPM" (Figs. 20-22, Table 3),
 # {dim}D{' (plane-strain analogue of the seed 3D beam)' if dim == 2 else ''}: cMPM.
 # Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
 #
 # A beam {LENGTH:g} x {HEIGHT:g}{depth} m (rho 10, nu 0.3, neo-Hookean, E 1e5 Pa) with
-# 40 soft elliptic {'inclusions' if dim == 2 else 'column inclusions (through the depth, along z)'}
+# {len(regions)} soft elliptic {'inclusions' if dim == 2 else 'column inclusions (through the depth, along z)'}
 # (E 1e2 Pa) of varied shapes, fixed at both ends, sagging under gravity
 # 25 m/s^2 (backward Euler, dt 0.025 s, to 0.6 s as the seed's Fig. 21).
 # cMPM: boundary B-spline coarse elements H = {H:g} m, L = H/2, n = {N_FINE} (knot
@@ -162,14 +170,14 @@ end
 
 subsection body 0
   set particles per cell         = {PARTICLES_PER_SPAN * (N_FINE - 2)}
-  set number of material regions = 40
+  set number of material regions = {len(regions)}
   subsection primitive 0
     set type         = box
     set lower corner = {vec(*([0.0] * dim))}
     set upper corner = {vec(*box_upper)}
   end
 {material(2, '1e5')}"""
-    for k, (cx, cy, a, b, angle) in enumerate(inclusions()):
+    for k, (cx, cy, a, b, angle) in enumerate(regions):
         if dim == 2:
             shape = (f"    set type           = ellipse\n"
                      f"    set center         = {vec(cx, cy)}\n"

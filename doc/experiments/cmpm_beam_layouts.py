@@ -1,0 +1,196 @@
+#!/usr/bin/python3
+"""How much the bending beam's max r_u (seed 002 Section 8.1.2, eq. 38)
+depends on where its 40 soft inclusions lie.
+
+The seed gives the beam's size, its materials and "40 softer elliptical
+column inclusions of varied shapes", not their places. bfemp draws them at
+random, two rows of 20 (doc/experiments/make_cmpm_prms.py, layout seed 2002
+in prm/cmpm/). This study draws other layouts the same way, runs cMPM,
+BSMPM-fine (the reference) and BSMPM-coarse on each, and writes one row per
+layout: the max r_u of cMPM and of BSMPM-coarse over the 24 steps, when
+cMPM's maximum occurs, and where its error is at that time (the share of
+the squared error, int |u - u_ref|^2 dV, carried by the soft inclusions and
+by the particles within 3 m of the clamped ends). A row "homogeneous" is
+the beam without inclusions.
+
+    /usr/bin/python3 doc/experiments/cmpm_beam_layouts.py [options]
+
+options:
+  --bfemp PATH     the bfemp executable (default: build/bfemp)
+  --dim 2|3        the beam (default 2; 3D needs hours per layout)
+  --seeds LIST     layout seeds, comma separated (default 2002,1,...,11)
+  --no-homogeneous leave out the beam without inclusions
+  --out DIR        work folder (default: output/cmpm_beam_layouts_<dim>d);
+                   the table goes to DIR/layouts.csv
+  --quiet          no progress lines
+
+The study is resumable: a layout whose DIR/<label>/result.csv exists is not
+run again (delete DIR to measure again after bfemp has changed). Every CSV is written complete or not at all. About 25 s per
+layout in 2D on a 2-core machine. doc/cmpm.md ("Bending beam") discusses the
+result; doc/experiments/data/cmpm_beam_layouts_2d.csv is a copy of one run.
+
+Needs numpy and the vtk Python module (Debian: python3-numpy,
+python3-vtk9)."""
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_cmpm_prms  # noqa: E402
+import particle_error  # noqa: E402
+
+ROOT = make_cmpm_prms.ROOT
+CLAMP_ZONE = 3.0  # m from each end: "near the clamps"
+COLUMNS = ["layout", "max_r_u_cmpm", "time_of_max", "r_u_cmpm_end",
+           "max_r_u_coarse", "soft_share", "clamp_share", "soft_volume"]
+
+
+def write_atomically(path, text):
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
+    with os.fdopen(handle, "w") as out:
+        out.write(text)
+    os.chmod(temporary, 0o644)
+    os.replace(temporary, path)
+
+
+def write_scene(folder, dim, seed):
+    """The three prm files of one layout in @p folder (seed None: no
+    inclusions), as make_cmpm_prms.py writes them for prm/cmpm/."""
+    os.makedirs(folder, exist_ok=True)
+    name = make_cmpm_prms.name_of
+    files = {name("bending_beam", dim, ""):
+             make_cmpm_prms.bending_beam(dim, seed)}
+    for variant in ("fine", "coarse"):
+        files[name("bending_beam", dim, variant)] = \
+            make_cmpm_prms.bending_beam_variant(dim, variant)
+    for file, text in files.items():
+        write_atomically(os.path.join(folder, file), text)
+    runs = []
+    for variant in ("", "fine", "coarse"):
+        suffix = f"_{variant}" if variant else ""
+        wrapper = os.path.join(folder, f"run{suffix}.prm")
+        write_atomically(wrapper, f"include {name('bending_beam', dim, variant)}"
+                         "\nsubsection run\n  set quiet = true\nend\n")
+        runs.append((f"cmpm_bending_beam_{dim}d{suffix}", wrapper))
+    return runs
+
+
+def run_bfemp(bfemp, folder, wrapper):
+    with open(wrapper + ".log", "w") as log:
+        status = subprocess.call([bfemp, os.path.basename(wrapper)],
+                                 cwd=folder, stdout=log,
+                                 stderr=subprocess.STDOUT)
+    if status != 0:
+        raise particle_error.ToolError(
+            f"{wrapper}: bfemp stopped with status {status} (see "
+            f"{wrapper}.log)")
+
+
+def snapshot_at(path, when):
+    for t, vtu in particle_error.series(path):
+        if abs(t - when) <= particle_error.TIME_TOLERANCE:
+            return particle_error.snapshot(vtu)
+    raise particle_error.ToolError(f"{path}: no snapshot at t = {when:g}")
+
+
+def where(reference_path, run_path, when):
+    """Shares of the squared displacement error of @p run_path at @p when
+    in the soft inclusions and within CLAMP_ZONE of the ends, and the soft
+    inclusions' share of the volume."""
+    reference = snapshot_at(reference_path, when)
+    run = snapshot_at(run_path, when)
+    p = particle_error.match(reference, run, f"{run_path} (t = {when:g})")
+    weight = reference["J"] * reference["volume"]
+    error = weight * np.sum(
+        (run["displacement"][p] - reference["displacement"])**2, axis=1)
+    soft = reference["material_id"] > 0
+    x = reference["X"][:, 0]
+    clamps = (x < CLAMP_ZONE) | (x > make_cmpm_prms.LENGTH - CLAMP_ZONE)
+    return (error[soft].sum() / error.sum(), error[clamps].sum() / error.sum(),
+            weight[soft].sum() / weight.sum())
+
+
+def study_layout(bfemp, folder, dim, seed, label):
+    """Runs one layout (or reads its result.csv) and returns its row."""
+    result = os.path.join(folder, "result.csv")
+    if os.path.isfile(result):
+        with open(result) as f:
+            lines = f.read().split("\n")
+        return dict(zip(COLUMNS, lines[1].split(",")))
+    runs = write_scene(folder, dim, seed)
+    for _, wrapper in runs:
+        run_bfemp(bfemp, folder, wrapper)
+    out = os.path.join(folder, "output")
+    cmpm, fine, coarse = (os.path.join(out, name) for name, _ in runs)
+    cmpm_rows = particle_error.compare(fine, cmpm)
+    coarse_rows = particle_error.compare(fine, coarse)
+    worst = max(cmpm_rows, key=lambda row: row[1])
+    soft, clamp, volume = where(fine, cmpm, worst[0])
+    row = {"layout": label, "max_r_u_cmpm": f"{worst[1]:.5f}",
+           "time_of_max": f"{worst[0]:.3f}",
+           "r_u_cmpm_end": f"{cmpm_rows[-1][1]:.5f}",
+           "max_r_u_coarse": f"{max(r[1] for r in coarse_rows):.5f}",
+           "soft_share": f"{soft:.3f}", "clamp_share": f"{clamp:.3f}",
+           "soft_volume": f"{volume:.3f}"}
+    write_atomically(result, ",".join(COLUMNS) + "\n" +
+                     ",".join(row[c] for c in COLUMNS) + "\n")
+    return row
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--bfemp", default=os.path.join(ROOT, "build", "bfemp"))
+    parser.add_argument("--dim", type=int, choices=(2, 3), default=2)
+    parser.add_argument("--seeds", default=",".join(
+        str(s) for s in [make_cmpm_prms.LAYOUT_SEED] + list(range(1, 12))))
+    parser.add_argument("--no-homogeneous", action="store_true")
+    parser.add_argument("--out")
+    parser.add_argument("--quiet", action="store_true")
+    args = parser.parse_args()
+    try:
+        seeds = [int(s) for s in args.seeds.split(",") if s.strip()]
+    except ValueError:
+        sys.exit(f"cmpm_beam_layouts.py: --seeds '{args.seeds}': expected "
+                 "integers separated by commas")
+    if not os.access(args.bfemp, os.X_OK):
+        sys.exit(f"cmpm_beam_layouts.py: --bfemp {args.bfemp}: no such "
+                 "executable (build bfemp first: ./setup.sh build)")
+    out = os.path.abspath(args.out or os.path.join(
+        ROOT, "output", f"cmpm_beam_layouts_{args.dim}d"))
+    os.makedirs(out, exist_ok=True)
+    layouts = [(str(s), s) for s in seeds]
+    if not args.no_homogeneous:
+        layouts.append(("homogeneous", None))
+    rows, start = [], time.time()
+    try:
+        for i, (label, seed) in enumerate(layouts):
+            rows.append(study_layout(args.bfemp, os.path.join(
+                out, f"layout_{label}"), args.dim, seed, label))
+            if not args.quiet:
+                elapsed = time.time() - start
+                left = elapsed / (i + 1) * (len(layouts) - i - 1)
+                r = rows[-1]
+                print(f"layout {label} ({i + 1}/{len(layouts)}): max r_u cMPM "
+                      f"{r['max_r_u_cmpm']} at t = {r['time_of_max']}, "
+                      f"BSMPM-coarse {r['max_r_u_coarse']}; about {left:.0f} s "
+                      "left", flush=True)
+    except particle_error.ToolError as error:
+        sys.exit(f"cmpm_beam_layouts.py: {error}")
+    table = os.path.join(out, "layouts.csv")
+    write_atomically(table, ",".join(COLUMNS) + "\n" + "".join(
+        ",".join(r[c] for c in COLUMNS) + "\n" for r in rows))
+    drawn = [float(r["max_r_u_cmpm"]) for r in rows
+             if r["layout"] != "homogeneous"]
+    print(f"{len(drawn)} layouts: max r_u of cMPM from {min(drawn):.4f} to "
+          f"{max(drawn):.4f}, median {np.median(drawn):.4f}; table in {table}")
+
+
+if __name__ == "__main__":
+    main()
