@@ -25,8 +25,9 @@ options:
   --quiet          no progress lines
 
 The study is resumable: a layout whose DIR/<label>/result.csv exists is not
-run again (delete DIR to measure again after bfemp has changed). Every CSV is written complete or not at all. About 25 s per
-layout in 2D on a 2-core machine. doc/cmpm.md ("Bending beam") discusses the
+run again (delete DIR to measure again after bfemp has changed). Every CSV
+is written complete or not at all. About 25 s per layout in 2D on a 2-core
+machine. doc/cmpm.md ("Bending beam") discusses the
 result; doc/experiments/data/cmpm_beam_layouts_2d.csv is a copy of one run.
 
 Needs numpy and the vtk Python module (Debian: python3-numpy,
@@ -36,7 +37,6 @@ import argparse
 import os
 import subprocess
 import sys
-import tempfile
 import time
 
 import numpy as np
@@ -44,20 +44,12 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_cmpm_prms  # noqa: E402
 import particle_error  # noqa: E402
+from run_data import write_atomically  # noqa: E402
 
 ROOT = make_cmpm_prms.ROOT
 CLAMP_ZONE = 3.0  # m from each end: "near the clamps"
 COLUMNS = ["layout", "max_r_u_cmpm", "time_of_max", "r_u_cmpm_end",
            "max_r_u_coarse", "soft_share", "clamp_share", "soft_volume"]
-
-
-def write_atomically(path, text):
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
-    with os.fdopen(handle, "w") as out:
-        out.write(text)
-    os.chmod(temporary, 0o644)
-    os.replace(temporary, path)
 
 
 def write_scene(folder, dim, seed):

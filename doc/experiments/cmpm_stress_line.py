@@ -27,7 +27,6 @@ python3-vtk9)."""
 import argparse
 import os
 import sys
-import tempfile
 
 import numpy as np
 
@@ -101,12 +100,8 @@ def main():
             lines += [f"{os.path.basename(os.path.normpath(run))},{time:g},"
                       f"{xi:.9g},{si:.9g}" for xi, si in zip(x, s)]
     if arguments.csv:
-        folder = os.path.dirname(os.path.abspath(arguments.csv))
-        handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
-        with os.fdopen(handle, "w") as out:
-            out.write("run,time,x,von_mises\n" + "\n".join(lines) + "\n")
-        os.chmod(temporary, 0o644)
-        os.replace(temporary, arguments.csv)
+        run_data.write_atomically(
+            arguments.csv, "run,time,x,von_mises\n" + "\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":

@@ -164,17 +164,12 @@ def compare(reference_path, run_path):
 
 
 def write_csv(path, rows):
-    """Writes the rows to a temporary file renamed into place, so that the
-    CSV is complete or absent."""
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
-    with os.fdopen(handle, "w") as out:
-        out.write("time,r_u,r_sigma\n")
-        for time, r_u, r_s in rows:
-            stress = "" if r_s is None else f"{r_s:.9e}"
-            out.write(f"{time:.9g},{r_u:.9e},{stress}\n")
-    os.chmod(temporary, 0o644)
-    os.replace(temporary, path)
+    """Writes the rows complete or not at all (run_data.write_atomically)."""
+    lines = ["time,r_u,r_sigma"]
+    for time, r_u, r_s in rows:
+        stress = "" if r_s is None else f"{r_s:.9e}"
+        lines.append(f"{time:.9g},{r_u:.9e},{stress}")
+    run_data.write_atomically(path, "\n".join(lines) + "\n")
 
 
 def write_snapshot(path, X, u, von_mises, volume, J):

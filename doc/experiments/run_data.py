@@ -2,10 +2,23 @@
 diagnostics.csv / bodies.csv as a numpy record array, the (time, file) list
 of a PVD series, and one VTU file as VTK's unstructured grid or as its
 points, cells and von Mises stress; and the entries of a run's input.prm.
+Also the writer the scripts share for their tables (complete or absent).
 Needs numpy and the vtk Python module (Debian: python3-numpy,
 python3-vtk9)."""
 import os
+import tempfile
 import xml.etree.ElementTree as ET
+
+
+def write_atomically(path, text):
+    """Writes @p text to a temporary file in @p path's folder and renames it
+    into place, so that @p path is either complete or untouched."""
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
+    with os.fdopen(handle, "w") as out:
+        out.write(text)
+    os.chmod(temporary, 0o644)
+    os.replace(temporary, path)
 
 
 def csv(path):
