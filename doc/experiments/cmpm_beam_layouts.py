@@ -20,6 +20,9 @@ options:
   --dim 2|3        the beam (default 2; 3D needs hours per layout)
   --seeds LIST     layout seeds, comma separated (default 2002,1,...,11)
   --no-homogeneous leave out the beam without inclusions
+  --interior-modes also run cMPM with `cmpm/interior modes = body load`
+                   (bfemp's addition, doc/cmpm.md) on every layout: two
+                   more columns, max_r_u_modes and time_of_max_modes
   --out DIR        work folder (default: output/cmpm_beam_layouts_<dim>d);
                    the table goes to DIR/layouts.csv
   --quiet          no progress lines
@@ -50,11 +53,14 @@ ROOT = make_cmpm_prms.ROOT
 CLAMP_ZONE = 3.0  # m from each end: "near the clamps"
 COLUMNS = ["layout", "max_r_u_cmpm", "time_of_max", "r_u_cmpm_end",
            "max_r_u_coarse", "soft_share", "clamp_share", "soft_volume"]
+MODES_COLUMNS = ["max_r_u_modes", "time_of_max_modes"]
 
 
-def write_scene(folder, dim, seed):
+def write_scene(folder, dim, seed, modes=False):
     """The three prm files of one layout in @p folder (seed None: no
-    inclusions), as make_cmpm_prms.py writes them for prm/cmpm/."""
+    inclusions), as make_cmpm_prms.py writes them for prm/cmpm/, and the
+    wrappers that run them (with @p modes a fourth: cMPM with interior
+    modes)."""
     os.makedirs(folder, exist_ok=True)
     name = make_cmpm_prms.name_of
     files = {name("bending_beam", dim, ""):
@@ -71,6 +77,14 @@ def write_scene(folder, dim, seed):
         write_atomically(wrapper, f"include {name('bending_beam', dim, variant)}"
                          "\nsubsection run\n  set quiet = true\nend\n")
         runs.append((f"cmpm_bending_beam_{dim}d{suffix}", wrapper))
+    if modes:
+        wrapper = os.path.join(folder, "run_modes.prm")
+        write_atomically(wrapper, f"include {name('bending_beam', dim, '')}"
+                         "\nsubsection run\n  set quiet = true\n"
+                         f"  set name = cmpm_bending_beam_{dim}d_modes\nend\n"
+                         "subsection cmpm\n  set interior modes = body load\n"
+                         "end\n")
+        runs.append((f"cmpm_bending_beam_{dim}d_modes", wrapper))
     return runs
 
 
@@ -109,18 +123,21 @@ def where(reference_path, run_path, when):
             weight[soft].sum() / weight.sum())
 
 
-def study_layout(bfemp, folder, dim, seed, label):
+def study_layout(bfemp, folder, dim, seed, label, modes=False):
     """Runs one layout (or reads its result.csv) and returns its row."""
     result = os.path.join(folder, "result.csv")
+    columns = COLUMNS + (MODES_COLUMNS if modes else [])
     if os.path.isfile(result):
         with open(result) as f:
             lines = f.read().split("\n")
-        return dict(zip(COLUMNS, lines[1].split(",")))
-    runs = write_scene(folder, dim, seed)
+        row = dict(zip(lines[0].split(","), lines[1].split(",")))
+        if all(c in row for c in columns):
+            return row
+    runs = write_scene(folder, dim, seed, modes)
     for _, wrapper in runs:
         run_bfemp(bfemp, folder, wrapper)
     out = os.path.join(folder, "output")
-    cmpm, fine, coarse = (os.path.join(out, name) for name, _ in runs)
+    cmpm, fine, coarse = (os.path.join(out, name) for name, _ in runs[:3])
     cmpm_rows = particle_error.compare(fine, cmpm)
     coarse_rows = particle_error.compare(fine, coarse)
     worst = max(cmpm_rows, key=lambda row: row[1])
@@ -131,8 +148,14 @@ def study_layout(bfemp, folder, dim, seed, label):
            "max_r_u_coarse": f"{max(r[1] for r in coarse_rows):.5f}",
            "soft_share": f"{soft:.3f}", "clamp_share": f"{clamp:.3f}",
            "soft_volume": f"{volume:.3f}"}
-    write_atomically(result, ",".join(COLUMNS) + "\n" +
-                     ",".join(row[c] for c in COLUMNS) + "\n")
+    if modes:
+        modes_rows = particle_error.compare(
+            fine, os.path.join(out, runs[3][0]))
+        worst_modes = max(modes_rows, key=lambda r: r[1])
+        row["max_r_u_modes"] = f"{worst_modes[1]:.5f}"
+        row["time_of_max_modes"] = f"{worst_modes[0]:.3f}"
+    write_atomically(result, ",".join(columns) + "\n" +
+                     ",".join(row[c] for c in columns) + "\n")
     return row
 
 
@@ -143,6 +166,7 @@ def main():
     parser.add_argument("--seeds", default=",".join(
         str(s) for s in [make_cmpm_prms.LAYOUT_SEED] + list(range(1, 12))))
     parser.add_argument("--no-homogeneous", action="store_true")
+    parser.add_argument("--interior-modes", action="store_true")
     parser.add_argument("--out")
     parser.add_argument("--quiet", action="store_true")
     args = parser.parse_args()
@@ -164,24 +188,33 @@ def main():
     try:
         for i, (label, seed) in enumerate(layouts):
             rows.append(study_layout(args.bfemp, os.path.join(
-                out, f"layout_{label}"), args.dim, seed, label))
+                out, f"layout_{label}"), args.dim, seed, label,
+                args.interior_modes))
             if not args.quiet:
                 elapsed = time.time() - start
                 left = elapsed / (i + 1) * (len(layouts) - i - 1)
                 r = rows[-1]
                 print(f"layout {label} ({i + 1}/{len(layouts)}): max r_u cMPM "
                       f"{r['max_r_u_cmpm']} at t = {r['time_of_max']}, "
-                      f"BSMPM-coarse {r['max_r_u_coarse']}; about {left:.0f} s "
-                      "left", flush=True)
+                      f"BSMPM-coarse {r['max_r_u_coarse']}"
+                      + (f", cMPM with interior modes {r['max_r_u_modes']}"
+                         if args.interior_modes else "")
+                      + f"; about {left:.0f} s left", flush=True)
     except particle_error.ToolError as error:
         sys.exit(f"cmpm_beam_layouts.py: {error}")
     table = os.path.join(out, "layouts.csv")
-    write_atomically(table, ",".join(COLUMNS) + "\n" + "".join(
-        ",".join(r[c] for c in COLUMNS) + "\n" for r in rows))
+    columns = COLUMNS + (MODES_COLUMNS if args.interior_modes else [])
+    write_atomically(table, ",".join(columns) + "\n" + "".join(
+        ",".join(r[c] for c in columns) + "\n" for r in rows))
     drawn = [float(r["max_r_u_cmpm"]) for r in rows
              if r["layout"] != "homogeneous"]
     print(f"{len(drawn)} layouts: max r_u of cMPM from {min(drawn):.4f} to "
           f"{max(drawn):.4f}, median {np.median(drawn):.4f}; table in {table}")
+    if args.interior_modes:
+        drawn = [float(r["max_r_u_modes"]) for r in rows
+                 if r["layout"] != "homogeneous"]
+        print(f"with interior modes: from {min(drawn):.4f} to "
+              f"{max(drawn):.4f}, median {np.median(drawn):.4f}")
 
 
 if __name__ == "__main__":

@@ -855,6 +855,63 @@ def three_material_beam_variant(dim):
                            FINE_3D_SOLVER if dim == 3 else "")
 
 
+def three_material_beam_diagonal(dim, level):
+    """The seed's "Diagonal" baseline of Section 8.2.1 (Table 4) on bfemp's
+    fine patch: multilinear coarse elements (linear interpolation of the
+    corners on the element boundary) and diagonal blocks (each displacement
+    component condensed on its own). Level 1 on cMPM's coarse mesh and local
+    fine mesh, level 2 on the seed's 80 x 10 (x 10) elements with a local
+    4^dim mesh. Both keep cMPM's particles."""
+    base = name_of("three_material_beam", dim, "")
+    span = TMB_H / (TMB_N_FINE[dim] - 2)
+    spacing = span / PARTICLES_PER_SPAN
+    if level == 1:
+        H, n_fine = TMB_H, TMB_N_FINE[dim]
+    else:
+        H, n_fine = 0.1, 6
+    lower = [-H, -TMB_SAG_ROOM] + ([] if dim == 2 else [-H])
+    upper = [8 + H, 1 + H] + ([] if dim == 2 else [1 + H])
+    elements = f"{round(8 / H)} x {round(1 / H)}" + (
+        "" if dim == 2 else f" x {round(1 / H)}")
+    text = f"""# Seed 002 Section 8.2.1, {dim}D: the "Diagonal-{level}" baseline of Table 4 on bfemp's fine
+# patch, compared with {base} (the same particles).
+# Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
+# Multilinear coarse elements (the element's corners, linearly interpolated
+# on its boundary: the seed's "displacement constraints generated from linear
+# interpolation") with diagonal blocks (each displacement component condensed
+# on its own: "shape functions of diagonal matrix-form"), on {elements}
+# elements of H = {H:g} m with n = {n_fine} ({n_fine - 2}^{dim} local knot spans of {H / (n_fine - 2):g} m). The
+# seed's Diagonal uses piecewise linear fine functions; these are bfemp's
+# quadratic B-splines. Seed (3D): Diagonal-1 r_u 0.241, r_sigma 0.327;
+# Diagonal-2 (80 x 10 x 10, local 4^3) 0.085, 0.137.
+include {base}
+
+subsection run
+  set name = cmpm_three_material_beam_{dim}d_diagonal{level}
+end
+
+subsection cmpm
+  set coarse element type      = multilinear
+  set coarse node span         = H
+  set shape function form      = diagonal
+  set fine nodes per direction = {n_fine}
+end
+"""
+    if level == 2:
+        text += f"""
+subsection grid
+  set lower corner = {vec(*lower)}
+  set upper corner = {vec(*upper)}
+  set cell size    = {H!r}
+end
+
+subsection body 0
+  set particles per cell = {round(H / spacing)}
+end
+"""
+    return text
+
+
 def name_of(scene, dim, variant):
     suffix = f"_{variant}" if variant else ""
     return f"{scene}_{dim}d{suffix}.prm"
@@ -887,6 +944,9 @@ def main():
             three_material_beam(dim)
         files[name_of("three_material_beam", dim, "fine")] = \
             three_material_beam_variant(dim)
+        for level in (1, 2):
+            files[name_of("three_material_beam", dim, f"diagonal{level}")] = \
+                three_material_beam_diagonal(dim, level)
     for name, text in files.items():
         with open(os.path.join(target, name), "w") as out:
             out.write(text)

@@ -5,6 +5,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -97,7 +98,9 @@ namespace bfemp
     constexpr unsigned int n_stencil = CoarseGrid<dim>::n_stencil;
     typename CoarseGrid<dim>::FineStencil stencil;
     grid.fine_stencil(point.position, stencil);
-    const unsigned int r = grid.n_local_nodes();
+    const unsigned int r        = grid.n_local_nodes();
+    const bool         diagonal = grid.parameters().shape_function_form ==
+                          CmpmParameters::ShapeFunctionForm::diagonal;
 
     // g_k = F^T grad B_k: dF/du_k of BFEMP eq. 25 in displacement form
     const Tensor<2, dim> F_T = transpose(point.deformation_gradient);
@@ -142,6 +145,7 @@ namespace bfemp
                 T[a][c][e] +=
                   point.weight * point.tangent[a][b][c][e] * g[q][b];
 
+        // (the diagonal form keeps the blocks within one component, a == c)
         for (unsigned int m = 0; m < n_stencil; ++m)
           {
             const int j = grid.interior_index(stencil.node[m]);
@@ -149,12 +153,14 @@ namespace bfemp
               continue;
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int c = 0; c < dim; ++c)
-                K_i(dim * i + a, dim * j + c) += T[a][c] * g[m];
+                if (!diagonal || a == c)
+                  K_i(dim * i + a, dim * j + c) += T[a][c] * g[m];
           }
         for (const unsigned int I : touched)
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int c = 0; c < dim; ++c)
-              R(dim * i + a, dim * I + c) += T[a][c] * G[I];
+              if (!diagonal || a == c)
+                R(dim * i + a, dim * I + c) += T[a][c] * G[I];
       }
   }
 
@@ -182,12 +188,15 @@ namespace bfemp
 
   template <int dim>
   void
-  BoundaryInteriorMap<dim>::condense(const FullMatrix<double>    &K_i,
-                                     const FullMatrix<double>    &R,
-                                     std::vector<Tensor<2, dim>> &control) const
+  BoundaryInteriorMap<dim>::condense(
+    const FullMatrix<double>                     &K_i,
+    const FullMatrix<double>                     &R,
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    std::vector<Tensor<2, dim>>                  &control) const
   {
-    const unsigned int       n_i = grid.n_interior_fine();
-    const unsigned int       r   = grid.n_local_nodes();
+    const unsigned int       n_i     = grid.n_interior_fine();
+    const unsigned int       r       = grid.n_local_nodes();
+    const unsigned int       columns = grid.n_element_unknowns();
     LAPACKFullMatrix<double> K(dim * n_i, dim * n_i);
     K = K_i;
     K.set_property(LAPACKSupport::symmetric);
@@ -206,13 +215,75 @@ namespace bfemp
     LAPACKFullMatrix<double> X(dim * n_i, dim * r);
     X = R;
     K.solve(X);
-
-    control.resize(n_i * r);
+    control.resize(n_i * columns);
     for (unsigned int i = 0; i < n_i; ++i)
       for (unsigned int I = 0; I < r; ++I)
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int c = 0; c < dim; ++c)
-            control[i * r + I][a][c] = -X(dim * i + a, dim * I + c);
+            control[i * columns + I][a][c] = -X(dim * i + a, dim * I + c);
+    if (columns == r)
+      return;
+
+    // The interior modes: the interior's static response K_i^-1 f_a to a
+    // unit acceleration of the element's particles in direction a, its
+    // boundary held. (A solve of their own, so that the coarse columns are
+    // those without modes to the last bit.)
+    LAPACKFullMatrix<double> Y(dim * n_i, dim);
+    for (const LocalQuadraturePoint<dim> &point : points)
+      {
+        typename CoarseGrid<dim>::FineStencil stencil;
+        grid.fine_stencil(point.position, stencil);
+        for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+          {
+            const int i = grid.interior_index(stencil.node[q]);
+            if (i >= 0)
+              for (unsigned int a = 0; a < dim; ++a)
+                Y(dim * i + a, a) += point.mass * stencil.value[q];
+          }
+      }
+    K.solve(Y);
+    for (unsigned int i = 0; i < n_i; ++i)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int c = 0; c < dim; ++c)
+          control[i * columns + r][a][c] = Y(dim * i + a, c);
+    normalize_mode(points, control);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryInteriorMap<dim>::normalize_mode(
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    std::vector<Tensor<2, dim>>                  &control) const
+  {
+    // K_i^-1 f_i has the units of m / (m/s^2). Scaled so that its largest
+    // entry at a particle is 1, the mode's amplitude is a displacement of
+    // the particles (m), as a coarse node's is: Newton's stopping test on
+    // the unknowns and the contact's bound on the particles' motion then
+    // treat it like the others.
+    const unsigned int n_i     = grid.n_interior_fine();
+    const unsigned int columns = grid.n_element_unknowns();
+    const unsigned int mode    = columns - 1;
+    double             largest = 0.;
+    for (const LocalQuadraturePoint<dim> &point : points)
+      {
+        typename CoarseGrid<dim>::FineStencil stencil;
+        grid.fine_stencil(point.position, stencil);
+        Tensor<2, dim> value;
+        for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+          {
+            const int i = grid.interior_index(stencil.node[q]);
+            if (i >= 0)
+              value += stencil.value[q] * control[i * columns + mode];
+          }
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            largest = std::max(largest, std::abs(value[a][c]));
+      }
+    if (largest > 0.)
+      for (unsigned int i = 0; i < n_i; ++i)
+        control[i * columns + mode] /= largest;
   }
 
 
@@ -231,7 +302,7 @@ namespace bfemp
     const double fictitious = fictitious_weight(points);
     K_i.add(fictitious, fictitious_K_i);
     R.add(fictitious, fictitious_R);
-    condense(K_i, R, control);
+    condense(K_i, R, points, control);
   }
 
 
@@ -274,11 +345,15 @@ namespace bfemp
       if (grid.interior_index(k) < 0)
         for (const auto &[I, weight] : psi.row(k))
           q[k] += weight * coarse_displacement[I];
-    Vector<double> x(dim * n_i);
+    // (the interior modes, columns r.., are not part of the start: the
+    // local equilibrium has no body load)
+    const unsigned int columns = grid.n_element_unknowns();
+    Vector<double>     x(dim * n_i);
     for (unsigned int i = 0; i < n_i; ++i)
       for (unsigned int I = 0; I < r; ++I)
         {
-          const Tensor<1, dim> qi = control[i * r + I] * coarse_displacement[I];
+          const Tensor<1, dim> qi =
+            control[i * columns + I] * coarse_displacement[I];
           for (unsigned int a = 0; a < dim; ++a)
             x(dim * i + a) += qi[a];
         }
@@ -394,7 +469,7 @@ namespace bfemp
         if (step.linfty_norm() <= tolerance)
           {
             // eq. 30 with the tangent at the equilibrium
-            condense(K_i, R, control);
+            condense(K_i, R, points, control);
             statistics.energy = E;
             return statistics;
           }

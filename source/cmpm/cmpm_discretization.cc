@@ -43,6 +43,7 @@ namespace bfemp
           LocalQuadraturePoint<dim> point;
           point.position = Point<dim>(particle.get_location() - element.corner);
           point.weight   = p[Layout::rest_volume];
+          point.mass     = p[Layout::mass];
           point.deformation_gradient =
             Layout::get_tensor(p, Layout::deformation_gradient);
           point.material =
@@ -121,9 +122,9 @@ namespace bfemp
                                   std::vector<Tensor<1, dim>>       &fine) const
   {
     thread_local std::vector<Tensor<1, dim>> coarse;
-    coarse.resize(grid.n_local_nodes());
+    coarse.resize(grid.n_element_unknowns());
     for (unsigned int I = 0; I < coarse.size(); ++I)
-      coarse[I] = field[grid.global_node(element.index, I)];
+      coarse[I] = field[grid.unknown_node(element.index, I)];
     phi.fine_values(element.flat, coarse, fine);
   }
 
@@ -135,12 +136,12 @@ namespace bfemp
                                              GridState<dim>      &state) const
   {
     using Layout = ParticleLayout<dim>;
-    state.reinit(grid.node_lattice().n_nodes);
+    state.reinit(grid.n_unknown_nodes());
     // Element by element: the momentum sum_p m_p Phi_Ip^T v_p = p^T (sum_p
     // m_p B_kp v_p) is formed on the fine patch and condensed once.
     particles.for_each_cell_scattering([&](const auto &cell_particles) {
       const Element      element = element_of(cell_particles);
-      const unsigned int r       = grid.n_local_nodes();
+      const unsigned int r       = grid.n_element_unknowns();
       thread_local std::vector<Tensor<1, dim>> fine_momentum, momentum;
       thread_local std::vector<Tensor<2, dim>> phi_p;
       thread_local std::vector<double>         activity;
@@ -170,7 +171,7 @@ namespace bfemp
       phi.coarse_forces(element.flat, fine_momentum, momentum);
       for (unsigned int I = 0; I < r; ++I)
         {
-          const std::size_t node = grid.global_node(element.index, I);
+          const std::size_t node = grid.unknown_node(element.index, I);
           state.mass[node] += activity[I];
           state.velocity[node] += momentum[I];
         }

@@ -63,6 +63,26 @@ namespace bfemp
       "equilibrium solved to convergence under the coarse displacement a "
       "first pass of the step reached, M from the tangent there and the step "
       "solved again (about twice the cost).");
+    prm.declare_entry(
+      "shape function form",
+      "matrix",
+      Patterns::Selection("matrix|diagonal"),
+      "[-] Blocks of the boundary-interior map (seed 002 Remark 1): matrix "
+      "(full dim x dim blocks, the local problem couples the components: "
+      "cMPM), or diagonal (each displacement component condensed on its own "
+      "with the K blocks within that component; with the multilinear "
+      "element, the seed's 'Diagonal' baseline of Section 8.2.1).");
+    prm.declare_entry(
+      "interior modes",
+      "none",
+      Patterns::Selection("none|body load"),
+      "[-] Extra shape functions per coarse element that vanish with their "
+      "gradient on the element's faces (bfemp's addition, not in seed 002): "
+      "none (the seed's space, eq. 30 with f_i = 0), or body load: one "
+      "element-owned unknown of dim components whose shape functions are "
+      "the interior's static response K_i^-1 f_i, boundary fine nodes held, "
+      "to a uniform body load on the element's particles in each direction. "
+      "It lets a soft region move inside a stiffer frame (doc/cmpm.md).");
     prm.leave_subsection();
   }
 
@@ -84,6 +104,12 @@ namespace bfemp
     local_solve              = prm.get("local solve") == "full Newton"
                                  ? LocalSolve::full_newton
                                  : LocalSolve::first_newton_step;
+    shape_function_form      = prm.get("shape function form") == "diagonal"
+                                 ? ShapeFunctionForm::diagonal
+                                 : ShapeFunctionForm::matrix;
+    interior_modes           = prm.get("interior modes") == "body load"
+                                 ? InteriorModes::body_load
+                                 : InteriorModes::none;
     prm.leave_subsection();
 
     require_input(n >= 5 && n <= 32,

@@ -265,6 +265,61 @@ namespace bfemp
 
 
   template <int dim>
+  unsigned int
+  CoarseGrid<dim>::n_element_unknowns() const
+  {
+    return n_local_nodes() + (has_interior_modes() ? 1 : 0);
+  }
+
+
+
+  template <int dim>
+  bool
+  CoarseGrid<dim>::has_interior_modes() const
+  {
+    return prm.interior_modes != CmpmParameters::InteriorModes::none;
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  CoarseGrid<dim>::unknown_node(const std::array<int, dim> &element,
+                                const unsigned int          I) const
+  {
+    AssertIndexRange(I, n_element_unknowns());
+    return I < n_local_nodes() ? global_node(element, I)
+                               : nodes.n_nodes + element_index(element);
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  CoarseGrid<dim>::n_unknown_nodes() const
+  {
+    return nodes.n_nodes + (has_interior_modes() ? n_elements_total() : 0);
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  CoarseGrid<dim>::unknown_position(const std::size_t node) const
+  {
+    AssertIndexRange(node, n_unknown_nodes());
+    if (node < nodes.n_nodes)
+      return nodes.node_position(node);
+    Point<dim> centre =
+      element_origin(element_multi_index(node - nodes.n_nodes));
+    for (unsigned int d = 0; d < dim; ++d)
+      centre[d] += 0.5 * H;
+    return centre;
+  }
+
+
+
+  template <int dim>
   void
   CoarseGrid<dim>::fine_stencil(const Point<dim> &x, FineStencil &stencil) const
   {

@@ -49,7 +49,7 @@ namespace bfemp
   {
     // Fine node k moves by sum_I p_kI Q_I: component a by at most
     // sum_I sum_c |(p_kI)_ac| |Q|_inf.
-    const unsigned int r       = coarse_grid.n_local_nodes();
+    const unsigned int r       = coarse_grid.n_element_unknowns();
     const auto        &p       = control[element];
     double             largest = boundary_bound;
     for (std::size_t i = 0; i * r < p.size(); ++i)
@@ -147,10 +147,10 @@ namespace bfemp
                 ExcMessage("cMPM: a coarse element without shape functions "
                            "was evaluated (it held no particle when they "
                            "were built)"));
-    const unsigned int r = coarse_grid.n_local_nodes();
+    const unsigned int r = coarse_grid.n_element_unknowns();
     values.assign(r, CoarseShapeValue<dim>());
     for (unsigned int I = 0; I < r; ++I)
-      values[I].node = coarse_grid.global_node(element, I);
+      values[I].node = coarse_grid.unknown_node(element, I);
 
     typename CoarseGrid<dim>::FineStencil stencil;
     coarse_grid.fine_stencil(Point<dim>(x -
@@ -194,7 +194,7 @@ namespace bfemp
     std::vector<Tensor<2, dim>>                 &phi) const
   {
     Assert(is_active(element), ExcInternalError());
-    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const unsigned int                 r = coarse_grid.n_element_unknowns();
     const std::vector<Tensor<2, dim>> &p = control[element];
     // eq. 15 as in evaluate(): the boundary rows are psi_kI I, so their
     // part is a scalar per coarse node
@@ -286,7 +286,7 @@ namespace bfemp
     std::vector<Tensor<1, dim>>       &fine) const
   {
     Assert(is_active(element), ExcInternalError());
-    const unsigned int r = coarse_grid.n_local_nodes();
+    const unsigned int r = coarse_grid.n_element_unknowns();
     AssertDimension(coarse.size(), r);
     const std::vector<Tensor<2, dim>> &p = control[element];
     fine.assign(coarse_grid.n_fine(), Tensor<1, dim>());
@@ -313,7 +313,7 @@ namespace bfemp
   {
     Assert(is_active(element), ExcInternalError());
     AssertDimension(fine.size(), coarse_grid.n_fine());
-    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const unsigned int                 r = coarse_grid.n_element_unknowns();
     const std::vector<Tensor<2, dim>> &p = control[element];
     coarse.assign(r, Tensor<1, dim>());
     for (unsigned int k = 0; k < fine.size(); ++k)
@@ -344,7 +344,7 @@ namespace bfemp
     AssertDimension(upper.size(), m * m);
     AssertDimension(coupled.size(), m * m);
     Assert(std::is_sorted(nodes.begin(), nodes.end()), ExcInternalError());
-    const unsigned int                 r = coarse_grid.n_local_nodes();
+    const unsigned int                 r = coarse_grid.n_element_unknowns();
     const std::vector<Tensor<2, dim>> &p = control[element];
     const unsigned int     n_interior    = coarse_grid.n_interior_fine();
     const std::size_t      cols          = dim * r;

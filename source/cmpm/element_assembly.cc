@@ -18,10 +18,10 @@ namespace bfemp
                 ExcMessage("cMPM: a coarse element without shape functions "
                            "was assembled (it held no particle when they "
                            "were built)"));
-    local_unknowns.resize(grid.n_local_nodes());
+    local_unknowns.resize(grid.n_element_unknowns());
     for (unsigned int I = 0; I < local_unknowns.size(); ++I)
       {
-        local_unknowns[I] = dofs.grid_node(grid.global_node(index, I));
+        local_unknowns[I] = dofs.grid_node(grid.unknown_node(index, I));
         if (local_unknowns[I] == DofSpace<dim>::invalid)
           continue;
         valid_unknowns.push_back(local_unknowns[I]);

@@ -325,10 +325,11 @@ namespace bfemp
         // Planar Dirichlet boundaries on the coarse nodes (seed 002 Section
         // 8): walls and level sets hold the coarse nodes within them as
         // they hold grid nodes; the walls stay where the grid's faces are.
-        const Lattice<dim>     &nodes = cmpm->node_lattice();
-        std::vector<Point<dim>> positions(nodes.n_nodes);
-        for (std::size_t i = 0; i < nodes.n_nodes; ++i)
-          positions[i] = nodes.node_position(i);
+        // (an element's interior-mode node sits at the element's centre)
+        const CoarseGrid<dim>  &coarse = cmpm->coarse_grid();
+        std::vector<Point<dim>> positions(coarse.n_unknown_nodes());
+        for (std::size_t i = 0; i < positions.size(); ++i)
+          positions[i] = coarse.unknown_position(i);
         for (const auto &c : boundaries.implicit_constraints(grid.lattice(),
                                                              positions,
                                                              state.velocity,

@@ -19,6 +19,11 @@
 // - P2G and G2P through Phi: P2G keeps the total momentum, and a uniform
 //   coarse velocity V with u = dt V moves every particle by dt V with
 //   velocity V and leaves F_p unchanged.
+// All of it again with `cmpm/interior modes = body load` (one element-owned
+// unknown per element, doc/cmpm.md): the same checks, with the sums of
+// forces, momentum and the translation over the coarse lattice nodes (a
+// mode is no part of a translation); and the modes are checked to leave
+// the lattice nodes' shape functions unchanged at every particle.
 // Round-off dependent numbers go to stdout; the output holds the checks.
 
 #include <bfemp/cmpm/cmpm_discretization.h>
@@ -61,10 +66,19 @@ namespace
   {
     using Layout = ParticleLayout<dim>;
 
-    Scene()
+    static CmpmParameters
+    parameters(const bool interior_modes)
+    {
+      CmpmParameters prm = bfemp_tests::cmpm_with_fine_nodes(5);
+      if (interior_modes)
+        prm.interior_modes = CmpmParameters::InteriorModes::body_load;
+      return prm;
+    }
+
+    explicit Scene(const bool interior_modes)
       : grid(bfemp_tests::unit_box_grid<dim>(0.25))
       , particles(grid)
-      , cmpm(grid, bfemp_tests::cmpm_with_fine_nodes(5))
+      , cmpm(grid, parameters(interior_modes))
       , elasticity(grid, particles, materials, dofs, &cmpm)
       , inertia(particles, cmpm, dofs)
       , potential_elasticity(dofs)
@@ -260,16 +274,59 @@ namespace
     return largest;
   }
 
+  /** Whether DoF node @p node is a lattice node (not an interior mode). */
+  template <int dim>
+  bool
+  is_lattice_node(const Scene<dim> &scene, const unsigned int node)
+  {
+    return node < scene.dofs.n_fem_nodes() ||
+           scene.dofs.lattice_node(node) <
+             scene.cmpm.coarse_grid().node_lattice().n_nodes;
+  }
+
   template <int dim>
   void
-  test()
+  test(const bool interior_modes)
   {
-    using Layout           = ParticleLayout<dim>;
-    const std::string name = std::to_string(dim) + "D ";
-    Scene<dim>        scene;
+    using Layout = ParticleLayout<dim>;
+    const std::string name =
+      std::to_string(dim) + "D " + (interior_modes ? "modes " : "");
+    const bfemp_tests::RandomNumbers start = random_numbers;
+    Scene<dim>                       scene(interior_modes);
+    unsigned int                     n_modes = 0;
+    for (unsigned int node = 0; node < scene.dofs.n_nodes(); ++node)
+      n_modes += is_lattice_node(scene, node) ? 0 : 1;
     deallog << name << scene.particles.n_particles() << " particles, "
-            << scene.dofs.n_grid_nodes() << " coarse nodes as unknowns"
-            << std::endl;
+            << scene.dofs.n_grid_nodes() << " coarse nodes as unknowns";
+    if (interior_modes)
+      deallog << " (" << n_modes << " of them interior-mode nodes)";
+    deallog << std::endl;
+    if (interior_modes)
+      {
+        check(n_modes == (1u << dim),
+              name + "each of the 2^dim elements with particles holds an "
+                     "interior-mode node");
+        // the lattice nodes' Phi_I are those without modes at every particle
+        // (the same particles: the scene's random numbers again)
+        const bfemp_tests::RandomNumbers after = random_numbers;
+        random_numbers                         = start;
+        Scene<dim> plain(false);
+        random_numbers = after;
+        std::vector<CoarseShapeValue<dim>> with, without;
+        double                             difference = 0.;
+        for (const auto &particle : scene.particles.handler())
+          {
+            scene.cmpm.evaluate(particle.get_location(), with);
+            plain.cmpm.evaluate(particle.get_location(), without);
+            for (unsigned int I = 0; I < without.size(); ++I)
+              difference =
+                std::max(difference,
+                         (with[I].value - without[I].value).norm() +
+                           (with[I].gradient - without[I].gradient).norm());
+          }
+        check(difference == 0.,
+              name + "the lattice nodes' Phi_I and grad Phi_I are unchanged");
+      }
 
     const Vector<double> u = scene.random_displacement(2e-4);
     bfemp_tests::check_term<dim>(name + "cMPM elasticity",
@@ -310,10 +367,11 @@ namespace
     Tensor<1, dim> net;
     double         largest = 0.;
     for (unsigned int node = 0; node < scene.dofs.n_nodes(); ++node)
-      {
-        net += DofSpace<dim>::get(g, node);
-        largest = std::max(largest, DofSpace<dim>::get(g, node).norm());
-      }
+      if (is_lattice_node(scene, node))
+        {
+          net += DofSpace<dim>::get(g, node);
+          largest = std::max(largest, DofSpace<dim>::get(g, node).norm());
+        }
     char force[80];
     std::snprintf(force, sizeof(force), "largest nodal force %.4g", largest);
     deallog << name << force << std::endl;
@@ -330,10 +388,12 @@ namespace
         particle_momentum +=
           p[Layout::mass] * Layout::get_vector(p, Layout::velocity);
       }
-    GridState<dim> state;
+    GridState<dim>    state;
+    const std::size_t n_lattice =
+      scene.cmpm.coarse_grid().node_lattice().n_nodes;
     scene.cmpm.particles_to_grid(scene.particles, state);
-    for (const auto &momentum : state.velocity)
-      grid_momentum += momentum;
+    for (std::size_t i = 0; i < n_lattice; ++i)
+      grid_momentum += state.velocity[i];
     check((grid_momentum - particle_momentum).norm() <
             1e-12 * particle_momentum.norm(),
           name + "P2G: sum_I sum_p m_p Phi_Ip^T v_p = sum_p m_p v_p");
@@ -345,8 +405,9 @@ namespace
     const double dt = 0.01;
     for (std::size_t i = 0; i < state.mass.size(); ++i)
       {
-        state.new_velocity[i] = V;
-        state.displacement[i] = dt * V;
+        // (interior modes at rest: a translation moves the lattice only)
+        state.new_velocity[i] = i < n_lattice ? V : Tensor<1, dim>();
+        state.displacement[i] = i < n_lattice ? dt * V : Tensor<1, dim>();
       }
     std::vector<Point<dim>>     before;
     std::vector<Tensor<2, dim>> F_before;
@@ -390,6 +451,9 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bfemp_tests::initlog();
-  test<2>();
-  test<3>();
+  for (const bool interior_modes : {false, true})
+    {
+      test<2>(interior_modes);
+      test<3>(interior_modes);
+    }
 }

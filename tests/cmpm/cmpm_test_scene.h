@@ -86,6 +86,7 @@ namespace bfemp_tests
               LocalQuadraturePoint<dim> point;
               point.position             = x;
               point.weight               = std::pow(h, dim);
+              point.mass                 = density * point.weight;
               point.deformation_gradient = F;
               point.tangent              = material->tangent(F, true);
               element_points.push_back(point);
@@ -120,6 +121,8 @@ namespace bfemp_tests
       return {u, grad_u};
     }
 
+    /** The particles' density [kg/m^3] (the interior modes' body load). */
+    double                       density = 1000.;
     CoarseGrid<dim>              grid;
     CoarsenedShapeFunctions<dim> shape_functions;
     std::vector<Point<dim>>      particle_positions;

@@ -27,6 +27,8 @@ namespace bfemp
     Point<dim> position;
     /** Quadrature weight, the particle's rest volume V_p^0 [m^dim]. */
     double weight = 0.;
+    /** The particle's mass m_p [kg]: the body load of the interior modes. */
+    double mass = 0.;
     /** F_p^n, the particle's deformation gradient at the step's start. */
     Tensor<2, dim> deformation_gradient;
     /** dP/dF at F_p^n (PSD-projected), the particle's own material. */
@@ -88,7 +90,12 @@ namespace bfemp
 
     /**
      * p_i of the element whose particles are @p points, stored as
-     * control[i * r + I] for interior fine node i and local coarse node I.
+     * control[i * R + I] for interior fine node i and element unknown I
+     * (R = CoarseGrid::n_element_unknowns()): the r local coarse nodes,
+     * then, with interior modes, the element's own node, whose block
+     * column is the static response K_i^-1 f_i to the body load
+     * f_ka = sum_p m_p B_k(x_p) e_a in each direction (bfemp's addition,
+     * doc/cmpm.md), scaled so that its largest entry at the particles is 1.
      */
     void
     compute(const std::vector<LocalQuadraturePoint<dim>> &points,
@@ -119,11 +126,19 @@ namespace bfemp
     fictitious_weight(
       const std::vector<LocalQuadraturePoint<dim>> &points) const;
 
-    /** Eq. 30 for every coarse column at once: control = -K_i^-1 R. */
+    /** Eq. 30 for every coarse column at once, control = -K_i^-1 R, and
+     *  the interior modes' columns K_i^-1 f_i from the points' masses. */
     void
-    condense(const FullMatrix<double>    &K_i,
-             const FullMatrix<double>    &R,
-             std::vector<Tensor<2, dim>> &control) const;
+    condense(const FullMatrix<double>                     &K_i,
+             const FullMatrix<double>                     &R,
+             const std::vector<LocalQuadraturePoint<dim>> &points,
+             std::vector<Tensor<2, dim>>                  &control) const;
+
+    /** Scales the interior modes' column of @p control so that its
+     *  largest entry at the points is 1. */
+    void
+    normalize_mode(const std::vector<LocalQuadraturePoint<dim>> &points,
+                   std::vector<Tensor<2, dim>>                  &control) const;
 
     /** Adds one quadrature point's w (dP/dF)-weighted products to K_i and
      *  R = K_ib Psi_b. */

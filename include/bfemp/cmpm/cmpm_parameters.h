@@ -56,6 +56,42 @@ namespace bfemp
       full_newton
     };
 
+    /**
+     * Extra shape functions of an element that vanish on its boundary fine
+     * nodes (bfemp's addition beyond seed 002, see doc/cmpm.md "Interior
+     * body-load modes").
+     */
+    enum class InteriorModes
+    {
+      /** The seed's space: eq. 30 with f_i = 0 only. */
+      none,
+      /**
+       * One element-owned unknown (dim components) per element: the static
+       * response K_i^-1 f_i of the interior fine nodes, with the boundary
+       * fine nodes held, to a uniform body load on the element's particles
+       * in each direction.
+       */
+      body_load
+    };
+
+    /**
+     * The form of the blocks of the boundary-interior map (seed 002
+     * Remark 1).
+     */
+    enum class ShapeFunctionForm
+    {
+      /** Full dim x dim blocks: the local problem couples the components
+       *  (cMPM). */
+      matrix,
+      /**
+       * Diagonal blocks: the local problem keeps only the K blocks that act
+       * within one displacement component, so each component is condensed
+       * on its own. With the multilinear element this is the seed's
+       * "Diagonal" baseline of Section 8.2.1 on bfemp's fine patch.
+       */
+      diagonal
+    };
+
     /** `cmpm/enabled`: the MPM bodies use cMPM instead of the grid kernel. */
     bool enabled = false;
     /** `cmpm/coarse element type`. */
@@ -81,6 +117,12 @@ namespace bfemp
 
     /** `cmpm/local solve`. */
     LocalSolve local_solve = LocalSolve::first_newton_step;
+
+    /** `cmpm/shape function form`. */
+    ShapeFunctionForm shape_function_form = ShapeFunctionForm::matrix;
+
+    /** `cmpm/interior modes`. */
+    InteriorModes interior_modes = InteriorModes::none;
 
     static void
     declare_parameters(ParameterHandler &prm);

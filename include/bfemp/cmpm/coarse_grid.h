@@ -130,6 +130,42 @@ namespace bfemp
     global_node(const std::array<int, dim> &element,
                 const unsigned int          I) const;
 
+    /**
+     * The unknowns of every element: its r local coarse nodes, then, with
+     * `cmpm/interior modes` = body load, one node of its own (the
+     * amplitudes of its interior modes, dim components like a coarse
+     * node's). r or r + 1.
+     */
+    unsigned int
+    n_element_unknowns() const;
+
+    /** Whether the elements have interior modes (n_element_unknowns() > r). */
+    bool
+    has_interior_modes() const;
+
+    /**
+     * The index of unknown I of @p element among all unknown nodes: the
+     * lattice index of local coarse node I for I < r, else
+     * node_lattice().n_nodes + the element's flat index. GridState and the
+     * DofSpace are sized by n_unknown_nodes().
+     */
+    std::size_t
+    unknown_node(const std::array<int, dim> &element,
+                 const unsigned int          I) const;
+
+    /** node_lattice().n_nodes, plus one per element with interior modes. */
+    std::size_t
+    n_unknown_nodes() const;
+
+    /**
+     * Where an unknown node sits for the grid's walls and level sets: a
+     * lattice node's position, or the centre of the element that owns an
+     * interior-mode node (a wall whose layers cover the element holds its
+     * interior as it holds its coarse nodes).
+     */
+    Point<dim>
+    unknown_position(const std::size_t node) const;
+
     /** Fills @p stencil with the fine functions nonzero at @p x. */
     void
     fine_stencil(const Point<dim> &x, FineStencil &stencil) const;

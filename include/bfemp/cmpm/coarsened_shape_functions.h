@@ -24,7 +24,9 @@ namespace bfemp
   template <int dim>
   struct CoarseShapeValue
   {
-    /** Flat index of the coarse node in CoarseGrid::node_lattice(). */
+    /** The unknown node (CoarseGrid::unknown_node()): a coarse node's flat
+     *  index in CoarseGrid::node_lattice(), or an element's interior-mode
+     *  node after them. */
     std::size_t    node = 0;
     Tensor<2, dim> value;
     Tensor<3, dim> gradient;
@@ -40,6 +42,13 @@ namespace bfemp
    * every step, as the material distribution moves). Each element's data
    * belongs to that element alone, so elements are rebuilt independently
    * (in parallel here, on their owning rank later).
+   *
+   * With `cmpm/interior modes` = body load every element has one more
+   * unknown node of its own (CoarseGrid::n_element_unknowns() = r + 1):
+   * its block column of p is zero on the boundary fine nodes and the
+   * interior's response to a body load on the interior ones
+   * (BoundaryInteriorMap). Below, "the r coarse nodes" of an element are
+   * then its r + 1 unknowns: the products with p run over all of them.
    */
   template <int dim>
   class CoarsenedShapeFunctions

@@ -1,0 +1,51 @@
+// cMPM's interior body-load modes (`cmpm/interior modes = body load`,
+// bfemp's addition beyond seed 002, doc/cmpm.md) on the 2D bending beam of
+// prm/cmpm/bending_beam_2d.prm (seed 002 Section 8.1.2, layout seed 2002):
+// doc/experiments/cmpm_beam_layouts.py runs cMPM without and with the modes,
+// BSMPM-fine (the reference) and BSMPM-coarse (about 40 s). The beam's
+// largest cMPM errors sit in soft inclusions that sag inside a stiff matrix
+// next to the clamps, a motion of an element's interior that eq. 30
+// (f_i = 0) leaves out and the modes add. Checked: the modes lower max r_u
+// by at least 5 %, and both cMPM variants stay below half of BSMPM-coarse's
+// max r_u. The numbers go to the output (4 digits).
+
+#include <cstdlib>
+#include <string>
+
+#include "../diagnostics_csv.h"
+#include "../format.h"
+#include "../tests.h"
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bfemp_tests::initlog();
+  using bfemp_tests::check;
+  using bfemp_tests::format;
+
+  const std::string command =
+    // a fresh folder: the script resumes layouts that have a result.csv
+    std::string("rm -rf modes && /usr/bin/python3 ") + BFEMP_SOURCE_DIR +
+    "/doc/experiments/cmpm_beam_layouts.py --quiet --seeds 2002 "
+    "--no-homogeneous --interior-modes --out modes --bfemp " +
+    BFEMP_BINARY_DIR + "/bfemp > modes.log 2>&1";
+  check(std::system(command.c_str()) == 0,
+        "cmpm_beam_layouts.py ran the beam four times");
+
+  const auto c = bfemp_tests::read_columns(
+    "modes/layouts.csv",
+    {"max_r_u_cmpm", "max_r_u_modes", "time_of_max_modes", "max_r_u_coarse"});
+  check(c[0].size() == 1, "one layout");
+  const double plain = c[0][0], modes = c[1][0], coarse = c[3][0];
+  dealii::deallog << "2D beam, layout seed 2002: max r_u cMPM "
+                  << format("%.4f", plain) << ", with interior modes "
+                  << format("%.4f", modes)
+                  << " (at t = " << format("%.3f", c[2][0])
+                  << "), BSMPM-coarse " << format("%.4f", coarse)
+                  << " (seed, 3D: cMPM 0.016)" << std::endl;
+  check(modes < 0.95 * plain,
+        "the interior modes lower cMPM's max r_u by at least 5 %");
+  check(plain < 0.5 * coarse && modes < 0.5 * coarse,
+        "both cMPM variants below half of BSMPM-coarse's max r_u");
+}
