@@ -24,7 +24,8 @@ options:
                    (bfemp's addition, doc/cmpm.md) on every layout: two
                    more columns, max_r_u_modes and time_of_max_modes
   --out DIR        work folder (default: output/cmpm_beam_layouts_<dim>d);
-                   the table goes to DIR/layouts.csv
+                   the table goes to DIR/layouts.csv, each layout's r_u
+                   at every output time to DIR/layout_<label>/series.csv
   --quiet          no progress lines
 
 The study is resumable: a layout whose DIR/<label>/result.csv exists is not
@@ -123,11 +124,24 @@ def where(reference_path, run_path, when):
             weight[soft].sum() / weight.sum())
 
 
+def write_series(path, series):
+    """r_u of every variant at the output times they share with the
+    reference: one column per variant (r_u_cmpm, r_u_coarse, r_u_modes)."""
+    names = list(series)
+    by_time = [{round(t, 9): r_u for t, r_u, _ in series[n]} for n in names]
+    times = sorted(set(by_time[0]).intersection(*by_time[1:]))
+    write_atomically(path, "time," + ",".join(f"r_u_{n}" for n in names) +
+                     "\n" + "".join(f"{t:.9g}," + ",".join(
+                         f"{b[t]:.9e}" for b in by_time) + "\n"
+                         for t in times))
+
+
 def study_layout(bfemp, folder, dim, seed, label, modes=False):
     """Runs one layout (or reads its result.csv) and returns its row."""
     result = os.path.join(folder, "result.csv")
     columns = COLUMNS + (MODES_COLUMNS if modes else [])
-    if os.path.isfile(result):
+    if os.path.isfile(result) and os.path.isfile(
+            os.path.join(folder, "series.csv")):
         with open(result) as f:
             lines = f.read().split("\n")
         row = dict(zip(lines[0].split(","), lines[1].split(",")))
@@ -148,12 +162,15 @@ def study_layout(bfemp, folder, dim, seed, label, modes=False):
            "max_r_u_coarse": f"{max(r[1] for r in coarse_rows):.5f}",
            "soft_share": f"{soft:.3f}", "clamp_share": f"{clamp:.3f}",
            "soft_volume": f"{volume:.3f}"}
+    series = {"cmpm": cmpm_rows, "coarse": coarse_rows}
     if modes:
         modes_rows = particle_error.compare(
             fine, os.path.join(out, runs[3][0]))
         worst_modes = max(modes_rows, key=lambda r: r[1])
         row["max_r_u_modes"] = f"{worst_modes[1]:.5f}"
         row["time_of_max_modes"] = f"{worst_modes[0]:.3f}"
+        series["modes"] = modes_rows
+    write_series(os.path.join(folder, "series.csv"), series)
     write_atomically(result, ",".join(columns) + "\n" +
                      ",".join(row[c] for c in columns) + "\n")
     return row

@@ -82,7 +82,9 @@ namespace bfemp
           {
             point.position = corner + s * gauss.point(q);
             point.weight   = gauss.weight(q) * std::pow(s, dim);
-            add_point(point, fictitious_K_i, fictitious_R);
+            FineStencil stencil;
+            grid.fine_stencil(point.position, stencil);
+            add_point(point, stencil, fictitious_K_i, fictitious_R);
           }
       }
   }
@@ -92,14 +94,13 @@ namespace bfemp
   template <int dim>
   void
   BoundaryInteriorMap<dim>::add_point(const LocalQuadraturePoint<dim> &point,
+                                      const FineStencil               &stencil,
                                       FullMatrix<double>              &K_i,
                                       FullMatrix<double>              &R) const
   {
     constexpr unsigned int n_stencil = CoarseGrid<dim>::n_stencil;
-    typename CoarseGrid<dim>::FineStencil stencil;
-    grid.fine_stencil(point.position, stencil);
-    const unsigned int r        = grid.n_local_nodes();
-    const bool         diagonal = grid.parameters().shape_function_form ==
+    const unsigned int     r         = grid.n_local_nodes();
+    const bool             diagonal  = grid.parameters().shape_function_form ==
                           CmpmParameters::ShapeFunctionForm::diagonal;
 
     // g_k = F^T grad B_k: dF/du_k of BFEMP eq. 25 in displacement form
@@ -192,6 +193,7 @@ namespace bfemp
     const FullMatrix<double>                     &K_i,
     const FullMatrix<double>                     &R,
     const std::vector<LocalQuadraturePoint<dim>> &points,
+    const std::vector<FineStencil>               &stencils,
     std::vector<Tensor<2, dim>>                  &control) const
   {
     const unsigned int       n_i     = grid.n_interior_fine();
@@ -229,24 +231,20 @@ namespace bfemp
     // boundary held. (A solve of their own, so that the coarse columns are
     // those without modes to the last bit.)
     LAPACKFullMatrix<double> Y(dim * n_i, dim);
-    for (const LocalQuadraturePoint<dim> &point : points)
-      {
-        typename CoarseGrid<dim>::FineStencil stencil;
-        grid.fine_stencil(point.position, stencil);
-        for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
-          {
-            const int i = grid.interior_index(stencil.node[q]);
-            if (i >= 0)
-              for (unsigned int a = 0; a < dim; ++a)
-                Y(dim * i + a, a) += point.mass * stencil.value[q];
-          }
-      }
+    for (std::size_t p = 0; p < points.size(); ++p)
+      for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
+        {
+          const int i = grid.interior_index(stencils[p].node[q]);
+          if (i >= 0)
+            for (unsigned int a = 0; a < dim; ++a)
+              Y(dim * i + a, a) += points[p].mass * stencils[p].value[q];
+        }
     K.solve(Y);
     for (unsigned int i = 0; i < n_i; ++i)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int c = 0; c < dim; ++c)
           control[i * columns + r][a][c] = Y(dim * i + a, c);
-    normalize_mode(points, control);
+    normalize_mode(stencils, control);
   }
 
 
@@ -254,8 +252,8 @@ namespace bfemp
   template <int dim>
   void
   BoundaryInteriorMap<dim>::normalize_mode(
-    const std::vector<LocalQuadraturePoint<dim>> &points,
-    std::vector<Tensor<2, dim>>                  &control) const
+    const std::vector<FineStencil> &stencils,
+    std::vector<Tensor<2, dim>>    &control) const
   {
     // K_i^-1 f_i has the units of m / (m/s^2). Scaled so that its largest
     // entry at a particle is 1, the mode's amplitude is a displacement of
@@ -266,10 +264,8 @@ namespace bfemp
     const unsigned int columns = grid.n_element_unknowns();
     const unsigned int mode    = columns - 1;
     double             largest = 0.;
-    for (const LocalQuadraturePoint<dim> &point : points)
+    for (const FineStencil &stencil : stencils)
       {
-        typename CoarseGrid<dim>::FineStencil stencil;
-        grid.fine_stencil(point.position, stencil);
         Tensor<2, dim> value;
         for (unsigned int q = 0; q < CoarseGrid<dim>::n_stencil; ++q)
           {
@@ -290,19 +286,48 @@ namespace bfemp
 
   template <int dim>
   void
+  BoundaryInteriorMap<dim>::gather_stencils(
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    std::vector<FineStencil>                     &stencils) const
+  {
+    stencils.resize(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p)
+      grid.fine_stencil(points[p].position, stencils[p]);
+  }
+
+
+
+  template <int dim>
+  void
   BoundaryInteriorMap<dim>::compute(
     const std::vector<LocalQuadraturePoint<dim>> &points,
     std::vector<Tensor<2, dim>>                  &control) const
   {
+    // (kept per thread: every element is rebuilt in every step)
+    thread_local std::vector<FineStencil> stencils;
+    gather_stencils(points, stencils);
+    compute(points, stencils, control);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryInteriorMap<dim>::compute(
+    const std::vector<LocalQuadraturePoint<dim>> &points,
+    const std::vector<FineStencil>               &stencils,
+    std::vector<Tensor<2, dim>>                  &control) const
+  {
+    AssertDimension(stencils.size(), points.size());
     const unsigned int n_i = grid.n_interior_fine();
     const unsigned int r   = grid.n_local_nodes();
     FullMatrix<double> K_i(dim * n_i, dim * n_i), R(dim * n_i, dim * r);
-    for (const LocalQuadraturePoint<dim> &point : points)
-      add_point(point, K_i, R);
+    for (std::size_t p = 0; p < points.size(); ++p)
+      add_point(points[p], stencils[p], K_i, R);
     const double fictitious = fictitious_weight(points);
     K_i.add(fictitious, fictitious_K_i);
     R.add(fictitious, fictitious_R);
-    condense(K_i, R, points, control);
+    condense(K_i, R, points, stencils, control);
   }
 
 
@@ -326,7 +351,9 @@ namespace bfemp
            ExcInternalError());
 
     // The start: the first Newton step, q_i = p_i Q (eq. 30).
-    compute(points, control);
+    std::vector<FineStencil> fine(points.size());
+    gather_stencils(points, fine);
+    compute(points, fine, control);
     const double fictitious = fictitious_weight(points);
 
     // Q as a vector, for the fictitious material's K_ib Psi_b Q
@@ -368,13 +395,11 @@ namespace bfemp
     std::vector<PointStencil> stencils(points.size());
     for (unsigned int p = 0; p < points.size(); ++p)
       {
-        typename CoarseGrid<dim>::FineStencil stencil;
-        grid.fine_stencil(points[p].position, stencil);
         const Tensor<2, dim> F_T = transpose(points[p].deformation_gradient);
         for (unsigned int k = 0; k < n_stencil; ++k)
           {
-            stencils[p].node[k] = stencil.node[k];
-            stencils[p].g[k]    = F_T * stencil.gradient[k];
+            stencils[p].node[k] = fine[p].node[k];
+            stencils[p].g[k]    = F_T * fine[p].gradient[k];
           }
       }
     auto set_interior = [&](const Vector<double> &values) {
@@ -435,7 +460,7 @@ namespace bfemp
             const Tensor<2, dim>      F       = deformation_gradient(p);
             LocalQuadraturePoint<dim> current = points[p];
             current.tangent = points[p].material->tangent(F, true);
-            add_point(current, K_i, R);
+            add_point(current, fine[p], K_i, R);
             const Tensor<2, dim> P =
               points[p].material->first_piola_kirchhoff(F);
             for (unsigned int k = 0; k < n_stencil; ++k)
@@ -469,7 +494,7 @@ namespace bfemp
         if (step.linfty_norm() <= tolerance)
           {
             // eq. 30 with the tangent at the equilibrium
-            condense(K_i, R, points, control);
+            condense(K_i, R, points, fine, control);
             statistics.energy = E;
             return statistics;
           }

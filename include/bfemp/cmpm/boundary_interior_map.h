@@ -120,6 +120,20 @@ namespace bfemp
       std::vector<Tensor<2, dim>>                  &control) const;
 
   private:
+    using FineStencil = typename CoarseGrid<dim>::FineStencil;
+
+    /** The fine stencil of every point, evaluated once per element so that
+     *  the stiffness, the interior modes' load and their scaling share it. */
+    void
+    gather_stencils(const std::vector<LocalQuadraturePoint<dim>> &points,
+                    std::vector<FineStencil> &stencils) const;
+
+    /** compute() with the points' fine stencils already gathered. */
+    void
+    compute(const std::vector<LocalQuadraturePoint<dim>> &points,
+            const std::vector<FineStencil>               &stencils,
+            std::vector<Tensor<2, dim>>                  &control) const;
+
     /** The weight of the fictitious material: eps times the points' mean
      *  stiffness scale, or 1 without points. */
     double
@@ -132,18 +146,20 @@ namespace bfemp
     condense(const FullMatrix<double>                     &K_i,
              const FullMatrix<double>                     &R,
              const std::vector<LocalQuadraturePoint<dim>> &points,
+             const std::vector<FineStencil>               &stencils,
              std::vector<Tensor<2, dim>>                  &control) const;
 
     /** Scales the interior modes' column of @p control so that its
-     *  largest entry at the points is 1. */
+     *  largest entry at the points (their @p stencils) is 1. */
     void
-    normalize_mode(const std::vector<LocalQuadraturePoint<dim>> &points,
-                   std::vector<Tensor<2, dim>>                  &control) const;
+    normalize_mode(const std::vector<FineStencil> &stencils,
+                   std::vector<Tensor<2, dim>>    &control) const;
 
     /** Adds one quadrature point's w (dP/dF)-weighted products to K_i and
-     *  R = K_ib Psi_b. */
+     *  R = K_ib Psi_b; @p stencil is the point's fine stencil. */
     void
     add_point(const LocalQuadraturePoint<dim> &point,
+              const FineStencil               &stencil,
               FullMatrix<double>              &K_i,
               FullMatrix<double>              &R) const;
 
