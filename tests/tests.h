@@ -10,6 +10,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <random>
@@ -132,6 +133,25 @@ namespace bfemp_tests
   {
     check(value <= bound, what + " " + measured(value, bound));
   }
+
+#if defined(BFEMP_SOURCE_DIR) && defined(BFEMP_BINARY_DIR)
+  /** Runs the study script doc/experiments/@p script on this build's bfemp,
+   *  quietly, with its work folder @p folder (removed first: the scripts
+   *  resume from the results they find there, which may come from an
+   *  earlier build) and @p arguments; its output goes to @p folder.log.
+   *  True if it exited with status 0. */
+  inline bool
+  run_study(const std::string &script,
+            const std::string &folder,
+            const std::string &arguments = "")
+  {
+    const std::string command =
+      "rm -rf " + folder + " && /usr/bin/python3 " + BFEMP_SOURCE_DIR +
+      "/doc/experiments/" + script + " --quiet --out " + folder + " --bfemp " +
+      BFEMP_BINARY_DIR + "/bfemp " + arguments + " > " + folder + ".log 2>&1";
+    return std::system(command.c_str()) == 0;
+  }
+#endif
 } // namespace bfemp_tests
 
 #endif

@@ -136,17 +136,25 @@ def write_series(path, series):
                          for t in times))
 
 
+def read_result(path, columns):
+    """The row of a finished study unit's one-row CSV @p path (what a
+    resumed study takes instead of running the unit again), or None if the
+    file is missing or lacks one of @p columns."""
+    if not os.path.isfile(path):
+        return None
+    with open(path) as f:
+        lines = f.read().split("\n")
+    row = dict(zip(lines[0].split(","), lines[1].split(",")))
+    return row if all(c in row for c in columns) else None
+
+
 def study_layout(bfemp, folder, dim, seed, label, modes=False):
     """Runs one layout (or reads its result.csv) and returns its row."""
     result = os.path.join(folder, "result.csv")
     columns = COLUMNS + (MODES_COLUMNS if modes else [])
-    if os.path.isfile(result) and os.path.isfile(
-            os.path.join(folder, "series.csv")):
-        with open(result) as f:
-            lines = f.read().split("\n")
-        row = dict(zip(lines[0].split(","), lines[1].split(",")))
-        if all(c in row for c in columns):
-            return row
+    row = read_result(result, columns)
+    if row is not None and os.path.isfile(os.path.join(folder, "series.csv")):
+        return row
     runs = write_scene(folder, dim, seed, modes)
     for _, wrapper in runs:
         run_bfemp(bfemp, folder, wrapper)

@@ -528,18 +528,25 @@ LATTICE_H = 0.25
 LATTICE_SPAN = LATTICE_H / (N_FINE - 2)
 
 
-def lattice_bar(dim):
+LATTICE_PITCH = 0.5
+
+
+def lattice_bar(dim, pitch=LATTICE_PITCH):
+    """The bar with square holes of 0.7 pitch on a square lattice of
+    @p pitch (struts 0.3 pitch wide, 49 % void at every pitch):
+    doc/experiments/cmpm_lattice_struts.py varies it."""
     lower = [-LATTICE_H, -4.0] + ([] if dim == 2 else [-LATTICE_H])
     upper = [8 + LATTICE_H, 2 + LATTICE_H] + ([] if dim == 2 else
                                             [2 + LATTICE_H])
-    holes = [(0.075 + 0.5 * i, 0.075 + 0.5 * j) for i in range(16)
-             for j in range(4)]
+    strut, hole = 0.3 * pitch, 0.7 * pitch
+    holes = [(strut / 2 + pitch * i, strut / 2 + pitch * j)
+             for i in range(round(8 / pitch)) for j in range(round(2 / pitch))]
     text = f"""# Seed 002 Section 8.1.3 "Performances at different types of coarse elements" (Figs. 23-24),
 # {dim}D{' (plane-strain analogue of the seed 3D bar)' if dim == 2 else ''}: cMPM on boundary B-spline coarse elements.
 # Written by doc/experiments/make_cmpm_prms.py; edit that script, not this file.
 #
-# A lattice bar 8 x 2{'' if dim == 2 else ' x 2'} m (E 1e5, nu 0.4, rho 10, neo-Hookean): struts 0.15 m
-# wide around {len(holes)} square holes of 0.35 m{'' if dim == 2 else ' through the depth'} (49 % void; the seed shows
+# A lattice bar 8 x 2{'' if dim == 2 else ' x 2'} m (E 1e5, nu 0.4, rho 10, neo-Hookean): struts {strut:g} m
+# wide around {len(holes)} square holes of {hole:g} m{'' if dim == 2 else ' through the depth'} (49 % void; the seed shows
 # no geometry, see make_cmpm_prms.py), its left face fixed (sticky wall x-
 # over one coarse element), sagging under gravity 5 m/s^2, backward Euler
 # with dt 0.025 s to 1.6 s. cMPM: H = 0.25 m, L = H/2, n = {N_FINE} (knot span
@@ -583,7 +590,7 @@ subsection body 0
 """
     for k, (x, y) in enumerate(holes):
         low = [x, y] + ([] if dim == 2 else [-0.1])
-        high = [x + 0.35, y + 0.35] + ([] if dim == 2 else [2.1])
+        high = [x + hole, y + hole] + ([] if dim == 2 else [2.1])
         text += (f"  subsection primitive {k + 1}\n"
                  f"    set type         = box\n"
                  f"    set operation    = subtract\n"

@@ -26,14 +26,11 @@ main(int argc, char **argv)
   using bfemp_tests::check;
   using bfemp_tests::format;
 
-  const std::string command =
-    // a fresh folder: the script resumes layouts that have a result.csv
-    std::string("rm -rf modes && /usr/bin/python3 ") + BFEMP_SOURCE_DIR +
-    "/doc/experiments/cmpm_beam_layouts.py --quiet --seeds 2002 "
-    "--no-homogeneous --interior-modes --out modes --bfemp " +
-    BFEMP_BINARY_DIR + "/bfemp > modes.log 2>&1";
-  check(std::system(command.c_str()) == 0,
-        "cmpm_beam_layouts.py ran the beam four times");
+  check(
+    bfemp_tests::run_study("cmpm_beam_layouts.py",
+                           "modes",
+                           "--seeds 2002 --no-homogeneous --interior-modes"),
+    "cmpm_beam_layouts.py ran the beam four times");
 
   const auto c = bfemp_tests::read_columns(
     "modes/layouts.csv",

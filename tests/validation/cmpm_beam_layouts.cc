@@ -31,13 +31,8 @@ main(int argc, char **argv)
   using bfemp_tests::check;
   using bfemp_tests::format;
 
-  const std::string command =
-    // a fresh folder: the script would take the results of an earlier
-    // build from it (it resumes layouts that have their result.csv)
-    std::string("rm -rf layouts && /usr/bin/python3 ") + BFEMP_SOURCE_DIR +
-    "/doc/experiments/cmpm_beam_layouts.py --quiet --out layouts --bfemp " +
-    BFEMP_BINARY_DIR + "/bfemp > layouts.log 2>&1";
-  check(std::system(command.c_str()) == 0, "cmpm_beam_layouts.py ran 13 beams");
+  check(bfemp_tests::run_study("cmpm_beam_layouts.py", "layouts"),
+        "cmpm_beam_layouts.py ran 13 beams");
 
   // layout 0 is prm/cmpm's (seed 2002), the last one the homogeneous beam
   const auto        c       = bfemp_tests::read_columns("layouts/layouts.csv",
