@@ -23,6 +23,9 @@ options:
   --interior-modes also run cMPM with `cmpm/interior modes = body load`
                    (bfemp's addition, doc/cmpm.md) on every layout: two
                    more columns, max_r_u_modes and time_of_max_modes
+  --h3-modes       also run cMPM with L = H/3 and interior modes (the
+                   _h3_modes variant of make_cmpm_prms.py): columns
+                   max_r_u_h3_modes and time_of_max_h3_modes
   --out DIR        work folder (default: output/cmpm_beam_layouts_<dim>d);
                    the table goes to DIR/layouts.csv, each layout's r_u
                    at every output time to DIR/layout_<label>/series.csv
@@ -55,18 +58,20 @@ CLAMP_ZONE = 3.0  # m from each end: "near the clamps"
 COLUMNS = ["layout", "max_r_u_cmpm", "time_of_max", "r_u_cmpm_end",
            "max_r_u_coarse", "soft_share", "clamp_share", "soft_volume"]
 MODES_COLUMNS = ["max_r_u_modes", "time_of_max_modes"]
+H3_MODES_COLUMNS = ["max_r_u_h3_modes", "time_of_max_h3_modes"]
 
 
-def write_scene(folder, dim, seed, modes=False):
-    """The three prm files of one layout in @p folder (seed None: no
+def write_scene(folder, dim, seed, modes=False, h3_modes=False):
+    """The prm files of one layout in @p folder (seed None: no
     inclusions), as make_cmpm_prms.py writes them for prm/cmpm/, and the
-    wrappers that run them (with @p modes a fourth: cMPM with interior
-    modes)."""
+    wrappers that run them: cMPM, BSMPM-fine, BSMPM-coarse, with @p modes
+    cMPM with interior modes, with @p h3_modes cMPM with L = H/3 and
+    interior modes. Returns (run name, wrapper) pairs in that order."""
     os.makedirs(folder, exist_ok=True)
     name = make_cmpm_prms.name_of
     files = {name("bending_beam", dim, ""):
              make_cmpm_prms.bending_beam(dim, seed)}
-    for variant in ("fine", "coarse"):
+    for variant in ("fine", "coarse") + (("h3_modes",) if h3_modes else ()):
         files[name("bending_beam", dim, variant)] = \
             make_cmpm_prms.bending_beam_variant(dim, variant)
     for file, text in files.items():
@@ -86,6 +91,12 @@ def write_scene(folder, dim, seed, modes=False):
                          "subsection cmpm\n  set interior modes = body load\n"
                          "end\n")
         runs.append((f"cmpm_bending_beam_{dim}d_modes", wrapper))
+    if h3_modes:
+        wrapper = os.path.join(folder, "run_h3_modes.prm")
+        write_atomically(wrapper, "include "
+                         f"{name('bending_beam', dim, 'h3_modes')}"
+                         "\nsubsection run\n  set quiet = true\nend\n")
+        runs.append((f"cmpm_bending_beam_{dim}d_h3_modes", wrapper))
     return runs
 
 
@@ -126,7 +137,8 @@ def where(reference_path, run_path, when):
 
 def write_series(path, series):
     """r_u of every variant at the output times they share with the
-    reference: one column per variant (r_u_cmpm, r_u_coarse, r_u_modes)."""
+    reference: one column per variant (r_u_cmpm, r_u_coarse, r_u_modes,
+    r_u_h3_modes)."""
     names = list(series)
     by_time = [{round(t, 9): r_u for t, r_u, _ in series[n]} for n in names]
     times = sorted(set(by_time[0]).intersection(*by_time[1:]))
@@ -148,14 +160,16 @@ def read_result(path, columns):
     return row if all(c in row for c in columns) else None
 
 
-def study_layout(bfemp, folder, dim, seed, label, modes=False):
+def study_layout(bfemp, folder, dim, seed, label, modes=False,
+                 h3_modes=False):
     """Runs one layout (or reads its result.csv) and returns its row."""
     result = os.path.join(folder, "result.csv")
-    columns = COLUMNS + (MODES_COLUMNS if modes else [])
+    columns = (COLUMNS + (MODES_COLUMNS if modes else []) +
+               (H3_MODES_COLUMNS if h3_modes else []))
     row = read_result(result, columns)
     if row is not None and os.path.isfile(os.path.join(folder, "series.csv")):
         return row
-    runs = write_scene(folder, dim, seed, modes)
+    runs = write_scene(folder, dim, seed, modes, h3_modes)
     for _, wrapper in runs:
         run_bfemp(bfemp, folder, wrapper)
     out = os.path.join(folder, "output")
@@ -171,13 +185,17 @@ def study_layout(bfemp, folder, dim, seed, label, modes=False):
            "soft_share": f"{soft:.3f}", "clamp_share": f"{clamp:.3f}",
            "soft_volume": f"{volume:.3f}"}
     series = {"cmpm": cmpm_rows, "coarse": coarse_rows}
-    if modes:
-        modes_rows = particle_error.compare(
-            fine, os.path.join(out, runs[3][0]))
-        worst_modes = max(modes_rows, key=lambda r: r[1])
-        row["max_r_u_modes"] = f"{worst_modes[1]:.5f}"
-        row["time_of_max_modes"] = f"{worst_modes[0]:.3f}"
-        series["modes"] = modes_rows
+    # the variants after the three runs, by the names write_scene gave them
+    for variant, run_name in (("modes", f"cmpm_bending_beam_{dim}d_modes"),
+                              ("h3_modes",
+                               f"cmpm_bending_beam_{dim}d_h3_modes")):
+        if run_name not in (name for name, _ in runs):
+            continue
+        variant_rows = particle_error.compare(fine, os.path.join(out, run_name))
+        worst_variant = max(variant_rows, key=lambda r: r[1])
+        row[f"max_r_u_{variant}"] = f"{worst_variant[1]:.5f}"
+        row[f"time_of_max_{variant}"] = f"{worst_variant[0]:.3f}"
+        series[variant] = variant_rows
     write_series(os.path.join(folder, "series.csv"), series)
     write_atomically(result, ",".join(columns) + "\n" +
                      ",".join(row[c] for c in columns) + "\n")
@@ -192,6 +210,7 @@ def main():
         str(s) for s in [make_cmpm_prms.LAYOUT_SEED] + list(range(1, 12))))
     parser.add_argument("--no-homogeneous", action="store_true")
     parser.add_argument("--interior-modes", action="store_true")
+    parser.add_argument("--h3-modes", action="store_true")
     parser.add_argument("--out")
     parser.add_argument("--quiet", action="store_true")
     args = parser.parse_args()
@@ -214,7 +233,7 @@ def main():
         for i, (label, seed) in enumerate(layouts):
             rows.append(study_layout(args.bfemp, os.path.join(
                 out, f"layout_{label}"), args.dim, seed, label,
-                args.interior_modes))
+                args.interior_modes, args.h3_modes))
             if not args.quiet:
                 elapsed = time.time() - start
                 left = elapsed / (i + 1) * (len(layouts) - i - 1)
@@ -224,22 +243,29 @@ def main():
                       f"BSMPM-coarse {r['max_r_u_coarse']}"
                       + (f", cMPM with interior modes {r['max_r_u_modes']}"
                          if args.interior_modes else "")
+                      + (f", L = H/3 with modes {r['max_r_u_h3_modes']}"
+                         if args.h3_modes else "")
                       + f"; about {left:.0f} s left", flush=True)
     except particle_error.ToolError as error:
         sys.exit(f"cmpm_beam_layouts.py: {error}")
     table = os.path.join(out, "layouts.csv")
-    columns = COLUMNS + (MODES_COLUMNS if args.interior_modes else [])
+    columns = (COLUMNS + (MODES_COLUMNS if args.interior_modes else []) +
+               (H3_MODES_COLUMNS if args.h3_modes else []))
     write_atomically(table, ",".join(columns) + "\n" + "".join(
         ",".join(r[c] for c in columns) + "\n" for r in rows))
     drawn = [float(r["max_r_u_cmpm"]) for r in rows
              if r["layout"] != "homogeneous"]
     print(f"{len(drawn)} layouts: max r_u of cMPM from {min(drawn):.4f} to "
           f"{max(drawn):.4f}, median {np.median(drawn):.4f}; table in {table}")
-    if args.interior_modes:
-        drawn = [float(r["max_r_u_modes"]) for r in rows
-                 if r["layout"] != "homogeneous"]
-        print(f"with interior modes: from {min(drawn):.4f} to "
-              f"{max(drawn):.4f}, median {np.median(drawn):.4f}")
+    for flag, variant, what in ((args.interior_modes, "modes",
+                                 "with interior modes"),
+                                (args.h3_modes, "h3_modes",
+                                 "L = H/3 with interior modes")):
+        if flag:
+            drawn = [float(r[f"max_r_u_{variant}"]) for r in rows
+                     if r["layout"] != "homogeneous"]
+            print(f"{what}: from {min(drawn):.4f} to {max(drawn):.4f}, "
+                  f"median {np.median(drawn):.4f}")
 
 
 if __name__ == "__main__":

@@ -24,9 +24,10 @@ namespace bfemp
       "interpolation of the corner nodes (multilinear, for comparison).");
     prm.declare_entry("coarse node span",
                       "H/2",
-                      Patterns::Selection("H|H/2"),
-                      "[-] Spacing L of the coarse nodes: the element span H "
-                      "or H/2 (nodes also at edge and face centres).");
+                      Patterns::Selection("H|H/2|H/3"),
+                      "[-] Spacing L of the coarse nodes: the element span H, "
+                      "H/2 (nodes also at edge and face centres) or H/3 "
+                      "(two nodes inside every edge, seed 002 Section 8.2.1).");
     prm.declare_entry("fine nodes per direction",
                       "7",
                       Patterns::Integer(5, 32),
@@ -97,7 +98,8 @@ namespace bfemp
     element_type             = type == "B-spline"      ? ElementType::bspline
                                : type == "multilinear" ? ElementType::multilinear
                                                        : ElementType::boundary_bspline;
-    nodes_per_span           = prm.get("coarse node span") == "H" ? 1 : 2;
+    const std::string span   = prm.get("coarse node span");
+    nodes_per_span           = span == "H" ? 1 : span == "H/2" ? 2 : 3;
     const long n             = prm.get_integer("fine nodes per direction");
     empty_span_stiffness     = prm.get_double("empty span stiffness");
     weak_node_regularization = prm.get_double("weak node regularization");
@@ -134,7 +136,7 @@ namespace bfemp
                     nodes_per_span != 1),
                   "cmpm",
                   "coarse node span",
-                  "H/2",
+                  "H/" + std::to_string(nodes_per_span),
                   "the multilinear coarse element has its nodes at the "
                   "element corners only: use H");
   }

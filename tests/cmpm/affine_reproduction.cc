@@ -1,5 +1,6 @@
 // Linear completeness of the cMPM shape functions and of the condensation
-// (seed 002 eqs. 30-31), for both element types and node spans, 2D and 3D:
+// (seed 002 eqs. 30-31), for both element types and node spans H, H/2 (and
+// the boundary B-spline element with L = H/3), 2D and 3D:
 // - homogeneous elements with particles at the regular sub-cell positions of
 //   the fine knot spans (2 and 3 per span and direction), undeformed and
 //   under a homogeneous stretch F: the condensation maps the boundary values

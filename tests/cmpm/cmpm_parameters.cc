@@ -109,4 +109,8 @@ main(int argc, char **argv)
   refused("set coarse element type = multilinear\n"
           "set coarse node span = H/2",
           "coarse node span");
+  bfemp_tests::check(parse("set coarse node span = H/3").nodes_per_span == 3,
+                     "coarse node span = H/3: three spacings per element "
+                     "edge (seed 002 Section 8.2.1)");
+  refused_by_pattern("set coarse node span = H/4", "coarse node span");
 }

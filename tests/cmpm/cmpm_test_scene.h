@@ -128,21 +128,25 @@ namespace bfemp_tests
     std::vector<Point<dim>>      particle_positions;
   };
 
-  /** The element types and node spans of seed 002 Section 5.1. */
+  /** The element types and node spans of seed 002 Section 5.1, and the
+   *  boundary B-spline element with L = H/3 (its Section 8.2.1). */
   inline std::vector<CmpmParameters>
   cmpm_variants(const unsigned int n = 7)
   {
     std::vector<CmpmParameters> variants;
+    const auto add = [&](const CmpmParameters::ElementType type,
+                         const unsigned int                l) {
+      CmpmParameters p;
+      p.element_type   = type;
+      p.nodes_per_span = l;
+      p.n_fine         = n;
+      variants.push_back(p);
+    };
     for (const auto type : {CmpmParameters::ElementType::bspline,
                             CmpmParameters::ElementType::boundary_bspline})
       for (const unsigned int l : {1u, 2u})
-        {
-          CmpmParameters p;
-          p.element_type   = type;
-          p.nodes_per_span = l;
-          p.n_fine         = n;
-          variants.push_back(p);
-        }
+        add(type, l);
+    add(CmpmParameters::ElementType::boundary_bspline, 3);
     return variants;
   }
 
@@ -150,7 +154,9 @@ namespace bfemp_tests
   variant_name(const CmpmParameters &p)
   {
     return CmpmParameters::to_string(p.element_type) +
-           (p.nodes_per_span == 1 ? ", L = H" : ", L = H/2") +
+           (p.nodes_per_span == 1
+              ? ", L = H"
+              : ", L = H/" + std::to_string(p.nodes_per_span)) +
            ", n = " + std::to_string(p.n_fine);
   }
 } // namespace bfemp_tests

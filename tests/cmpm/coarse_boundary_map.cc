@@ -1,7 +1,9 @@
 // The coarse-boundary map Psi of cMPM (seed 002 Section 5.1, eqs. 22-27):
 // - the connectivity sizes r of the seed (2D 16 / 25 and 12 / 16, 3D 64 / 125
 //   and 56 / 98 for the B-spline and boundary B-spline elements with
-//   L = H / H/2);
+//   L = H / H/2), and with L = H/3 (the seed's Section 8.2.1) 36 / 20 in 2D,
+//   216 / 152 in 3D: the (l + 3)^dim offsets around the element, of which
+//   the boundary B-spline element keeps those on a face line or plane;
 // - partition of unity of every row (eq. 33) and reproduction of an affine
 //   coarse field at the boundary fine nodes;
 // - Lemma 2 (eq. 27): a boundary fine node shared by neighbouring elements
@@ -42,7 +44,9 @@ namespace
   {
     const std::string name =
       std::to_string(dim) + "D " + CmpmParameters::to_string(prm.element_type) +
-      (prm.nodes_per_span == 1 ? ", L = H" : ", L = H/2");
+      (prm.nodes_per_span == 1
+         ? ", L = H"
+         : ", L = H/" + std::to_string(prm.nodes_per_span));
     std::array<unsigned int, dim> n_elements;
     n_elements.fill(2);
     const double                 H = 0.4;
@@ -58,6 +62,8 @@ namespace
       name + ": r = " + std::to_string(expected_r) +
         (prm.element_type == CmpmParameters::ElementType::multilinear
            ? " (the element's corners)"
+         : prm.nodes_per_span == 3
+           ? " (the offsets [-1, 4]^dim, on a face for boundary B-spline)"
            : " as in the seed (Lemma 1, Figs. 7-8, Sec. 7.1)"));
 
     // every local node is used by some row
@@ -180,10 +186,14 @@ main(int argc, char **argv)
   test<2>(make(Type::bspline, 2), 25);
   test<2>(make(Type::boundary_bspline, 1), 12);
   test<2>(make(Type::boundary_bspline, 2), 16);
+  test<2>(make(Type::bspline, 3), 36);
+  test<2>(make(Type::boundary_bspline, 3), 20);
   test<2>(make(Type::multilinear, 1), 4);
   test<3>(make(Type::bspline, 1), 64);
   test<3>(make(Type::bspline, 2), 125);
   test<3>(make(Type::boundary_bspline, 1), 56);
   test<3>(make(Type::boundary_bspline, 2), 98);
+  test<3>(make(Type::bspline, 3), 216);
+  test<3>(make(Type::boundary_bspline, 3), 152);
   test<3>(make(Type::multilinear, 1), 8);
 }

@@ -1,7 +1,8 @@
 // CoarsenedShapeFunctions::condense against the product it stands for,
 // K_alpha = p^T K p (seed 002's condensed stiffness), formed densely from p's
 // columns (fine_values() of unit coarse vectors) and a random symmetric K:
-// - for both element types and both node spans, in 2D and 3D, on an element
+// - for both element types and both node spans (and the boundary B-spline
+//   element with L = H/3), in 2D and 3D, on an element
 //   that holds a stiff ball (so that its interior rows of p are not those of
 //   a homogeneous element);
 // - K's blocks are given only between a random subset of the fine nodes (the

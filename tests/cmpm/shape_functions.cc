@@ -1,8 +1,8 @@
 // The coarsened shape functions Phi_I = B M Psi of cMPM (seed 002 Section 6)
 // on blocks of coarse elements filled with particles, homogeneous and
 // heterogeneous (a 1000 times stiffer ball and a particle-free slab, so that
-// some knot spans are empty), for both element types and both node spans,
-// in 2D and 3D:
+// some knot spans are empty), for both element types and both node spans
+// (and the boundary B-spline element with L = H/3), in 2D and 3D:
 // - partition of unity (eq. 34): sum_I Phi_I(x) = identity and
 //   sum_I grad Phi_I(x) = 0 at random points, to round-off;
 // - C1 continuity across coarse element faces (Theorem 3): Phi_I and

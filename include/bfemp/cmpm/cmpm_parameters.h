@@ -96,8 +96,9 @@ namespace bfemp
     bool enabled = false;
     /** `cmpm/coarse element type`. */
     ElementType element_type = ElementType::boundary_bspline;
-    /** `cmpm/coarse node span`: nodes per coarse element edge, 1 (L = H) or
-     *  2 (L = H/2, the seed's default). */
+    /** `cmpm/coarse node span`: coarse node spacings per coarse element
+     *  edge, 1 (L = H), 2 (L = H/2, the seed's default) or 3 (L = H/3, the
+     *  seed's Section 8.2.1). */
     unsigned int nodes_per_span = 2;
     /** `cmpm/fine nodes per direction`: n >= 5, the seed's default 7. */
     unsigned int n_fine = 7;

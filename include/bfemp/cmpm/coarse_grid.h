@@ -17,7 +17,8 @@ namespace bfemp
   /**
    * The geometry of cMPM (seed 002, Sections 3.3 and 5): the coarse mesh
    * D^H of elements of span H, the coarse nodes (a lattice of spacing
-   * L = H or H/2) and, inside every coarse element, the fine B-spline patch.
+   * L = H, H/2 or H/3) and, inside every coarse element, the fine B-spline
+   * patch.
    *
    * Fine patch. A uniform quadratic B-spline patch with n functions per
    * direction and no repeated knots (Remark 2) covers n - 2 knot spans of
