@@ -264,9 +264,13 @@ end
 
 # The coarse system has dense element blocks of 153 nodes in 3D; reusing a
 # step's factorization as CG's preconditioner gives the same state at 0.62
-# of the time (doc/performance.md "Coarse node span H/3").
+# of the time, and modified Newton (no Hessian assembled while the Newton
+# increments halve per iteration) cuts the assembly further, to an end state
+# within N eps_d dt of Newton's (doc/performance.md "Coarse node span H/3",
+# tests/experiments/cmpm_modified_newton).
 subsection solver
-  set factorization reuse = 20
+  set factorization reuse         = 20
+  set modified Newton contraction = 0.5
 end
 """
     if variant == "fine":

@@ -66,7 +66,8 @@ namespace bfemp
     if (implicit)
       file << ",newton_iterations,line_search_backtracks,step_bound_hits,"
               "residual,dofs,assembly_time,factorization_time,solve_time,"
-              "line_search_time,projected_hessians,factorizations";
+              "line_search_time,projected_hessians,factorizations,"
+              "modified_newton_iterations";
     if (with_contact)
       {
         file << ",contact_pairs,contact_particles,particles_in_fem,"
@@ -115,7 +116,8 @@ namespace bfemp
           << newton.bound_hits << ',' << newton.residual << ',' << n_dofs << ','
           << newton.assembly_time << ',' << newton.factorization_time << ','
           << newton.solve_time << ',' << newton.line_search_time << ','
-          << newton.projected_hessians << ',' << newton.factorizations;
+          << newton.projected_hessians << ',' << newton.factorizations << ','
+          << newton.modified_iterations;
     if (with_contact)
       {
         row << std::setprecision(12) << ',' << contact.pairs << ','

@@ -27,6 +27,7 @@ namespace bfemp
     long_exact_directions += other.long_exact_directions;
     skipped_exact_factorizations += other.skipped_exact_factorizations;
     factorizations += other.factorizations;
+    modified_iterations += other.modified_iterations;
     cg_iterations += other.cg_iterations;
     residual            = other.residual;
     energy              = other.energy;
@@ -288,6 +289,7 @@ namespace bfemp
                                    const double            gradient_norm,
                                    const double            forcing,
                                    const bool              factorized,
+                                   const bool              modified,
                                    const unsigned int      cg_iterations,
                                    const HessianKind       kind,
                                    const double            model_ratio,
@@ -299,8 +301,10 @@ namespace bfemp
          << " m/s (stop " << stop_at << "), step " << step << ", backtracks "
          << statistics.backtracks << ", E " << std::setprecision(10) << energy
          << std::setprecision(3) << " J, ||g|| " << gradient_norm << ", "
-         << (factorized ? "factorized" : "CG with an older factorization");
-    if (!factorized)
+         << (modified     ? "last factorization, no Hessian (modified Newton)"
+             : factorized ? "factorized"
+                          : "CG with an older factorization");
+    if (!factorized && !modified)
       line << " to eta " << forcing;
     if (cg_iterations > 0)
       line << ", " << cg_iterations << " CG iterations";
@@ -472,6 +476,58 @@ namespace bfemp
 
   template <int dim>
   bool
+  NewtonSolver<dim>::holds_factorization_for(
+    const IncrementalPotential<dim> &potential) const
+  {
+    return factorization_reusable &&
+           factorized_numbering == potential.dof_space().numbering();
+  }
+
+
+
+  template <int dim>
+  bool
+  NewtonSolver<dim>::modified_direction(
+    const IncrementalPotential<dim> &potential,
+    const Vector<double>            &minus_gradient,
+    const double                     dt,
+    const double                     last_residual,
+    Vector<double>                  &direction,
+    NewtonStatistics                &statistics) const
+  {
+    // The chord method when H_0 is kept through a solve, Shamanskii's when
+    // it is refreshed every few iterations (Kelley 1995, Ch. 5): with H_0
+    // positive definite, p = -H_0^-1 g descends, and the error contracts
+    // by about ||I - H_0^-1 H|| per iteration. The contraction of the
+    // increments measures that factor, so a direction that shrinks too
+    // slowly is set aside for the assembled Hessian (only a pair of
+    // triangular solves spent).
+    if (!(parameters.modified_newton_contraction > 0.) ||
+        !holds_factorization_for(potential))
+      return false;
+    Timer timer;
+    try
+      {
+        solver->solve(minus_gradient, direction);
+      }
+    catch (const SimulationError &)
+      {
+        return false;
+      }
+    potential.dof_space().project(direction);
+    statistics.solve_time += timer.wall_time();
+    if (!std::isfinite(direction.linfty_norm()) ||
+        !(-(minus_gradient * direction) < 0.))
+      return false;
+    const double residual = potential.increment_norm(direction) / dt;
+    return last_residual == 0. ||
+           residual <= parameters.modified_newton_contraction * last_residual;
+  }
+
+
+
+  template <int dim>
+  bool
   NewtonSolver<dim>::newton_direction(IncrementalPotential<dim> &potential,
                                       const Vector<double>      &u,
                                       const Vector<double>      &minus_gradient,
@@ -481,8 +537,7 @@ namespace bfemp
                                       NewtonStatistics &statistics) const
   {
     const bool reuse =
-      parameters.factorization_reuse > 0 && factorization_reusable &&
-      factorized_numbering == potential.dof_space().numbering();
+      parameters.factorization_reuse > 0 && holds_factorization_for(potential);
     const bool skip_factorization =
       kind == HessianKind::exact && skip_exact_factorization();
     if (skip_factorization)
@@ -622,6 +677,8 @@ namespace bfemp
     double last_move  = 0.;
     exact_skip_length = 0;
     exact_skips_left  = 0;
+    // set after a modified Newton direction along which E did not fall
+    bool refresh_hessian = false;
     while (true)
       {
         if (statistics.iterations == parameters.maximum_newton_iterations)
@@ -649,7 +706,17 @@ namespace bfemp
         // particle or element, a contact distance's curvature): Newton then
         // converges linearly at best. Where the exact sum is positive
         // definite it gives a descent direction with quadratic convergence.
-        bool exact = parameters.hessian_projection == "when indefinite" &&
+        const bool modified =
+          !refresh_hessian && modified_direction(potential,
+                                                 gradient,
+                                                 dt,
+                                                 statistics.residual,
+                                                 direction,
+                                                 statistics);
+        if (modified)
+          ++statistics.modified_iterations;
+        bool exact = !modified &&
+                     parameters.hessian_projection == "when indefinite" &&
                      newton_direction(potential,
                                       u,
                                       gradient,
@@ -665,7 +732,7 @@ namespace bfemp
             exact = false;
             ++statistics.long_exact_directions;
           }
-        if (!exact)
+        if (!exact && !modified)
           {
             newton_direction(potential,
                              u,
@@ -693,7 +760,7 @@ namespace bfemp
                                             slope,
                                             trial,
                                             trial_energy,
-                                            !exact,
+                                            !exact && !modified,
                                             statistics);
         statistics.line_search_time += timer.wall_time();
 
@@ -735,15 +802,19 @@ namespace bfemp
                         gradient.l2_norm(),
                         inexact.forcing,
                         statistics.factorizations > factorizations_before,
+                        modified,
                         statistics.cg_iterations - cg_iterations_before,
-                        exact ? HessianKind::exact : filtered_kind,
+                        exact || modified ? HessianKind::exact : filtered_kind,
                         model_ratio,
                         rejected_exact);
-        if (!exact && parameters.eigenvalue_filter == "adaptive")
+        if (!exact && !modified && parameters.eigenvalue_filter == "adaptive")
           filtered_kind = next_filter(filtered_kind, model_ratio);
         if (statistics.residual < stop_at && progress == 1.)
           break;
-        if (step == 0. && !(statistics.residual < stop_at))
+        // An older matrix's direction that the line search cannot use says
+        // nothing about the energy: the next iteration assembles.
+        refresh_hessian = modified && step == 0.;
+        if (step == 0. && !modified && !(statistics.residual < stop_at))
           fail("the line search found no decrease of the energy");
       }
     statistics.energy = energy;

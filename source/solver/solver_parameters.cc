@@ -124,6 +124,24 @@ namespace bfemp
       "the test decides on the exact step as with none. Needs 'factorization "
       "reuse' > 0.");
     prm.declare_entry(
+      "modified Newton contraction",
+      "0",
+      Patterns::Double(0., 1.),
+      "[-] Modified Newton (the chord and Shamanskii methods, Kelley 1995, "
+      "Ch. 5): with CHOLMOD or UMFPACK, an iteration first "
+      "solves with the last factorization as it stands (kept across time "
+      "steps while the unknowns are numbered the same), without assembling "
+      "the Hessian, and keeps that direction if it descends and its "
+      "increment ||p|| / dt is at most this fraction of the last "
+      "iteration's (the first iteration of a Newton solve keeps it if it "
+      "descends). Otherwise, and after a line search that found no "
+      "decrease along it, the iteration assembles the Hessian as usual. "
+      "The stopping test reads the increment of the matrix that was used. "
+      "Pays where the Hessian's assembly or factorization dominates a step "
+      "and the Hessian changes little between iterations and steps (cMPM's "
+      "condensation). 0: every iteration assembles the Hessian, as the "
+      "paper does. Must lie in [0, 1) and be 0 with CG AMG.");
+    prm.declare_entry(
       "projected step extrapolation",
       "0",
       Patterns::Integer(0, 10),
@@ -203,9 +221,10 @@ namespace bfemp
     exact_step_growth_limit = prm.get_double("exact step growth limit");
     skip_failed_exact_factorizations =
       prm.get_bool("skip failed exact factorizations");
-    newton_increment    = prm.get("Newton increment");
-    factorization_reuse = prm.get_integer("factorization reuse");
-    forcing_term        = prm.get("forcing term");
+    newton_increment            = prm.get("Newton increment");
+    factorization_reuse         = prm.get_integer("factorization reuse");
+    forcing_term                = prm.get("forcing term");
+    modified_newton_contraction = prm.get_double("modified Newton contraction");
     prm.leave_subsection();
 
     require_input(newton_tolerance > 0.,
@@ -222,6 +241,19 @@ namespace bfemp
                   "solver",
                   "factorization reuse",
                   std::to_string(factorization_reuse),
+                  "must be 0 with 'linear solver' = CG AMG (it has no "
+                  "factorization to reuse)");
+    require_input(modified_newton_contraction < 1.,
+                  "solver",
+                  "modified Newton contraction",
+                  to_input_string(modified_newton_contraction),
+                  "must lie in [0, 1): a direction whose increment does not "
+                  "shrink would be kept forever");
+    require_input(modified_newton_contraction == 0. ||
+                    linear_solver != "CG AMG",
+                  "solver",
+                  "modified Newton contraction",
+                  to_input_string(modified_newton_contraction),
                   "must be 0 with 'linear solver' = CG AMG (it has no "
                   "factorization to reuse)");
     require_input(forcing_term == "none" || factorization_reuse > 0,

@@ -44,6 +44,10 @@ namespace bfemp
      *  iterations with `solver/factorization reuse`, more where a fall-back
      *  refactorizes; the constraint moves' response solves not counted). */
     unsigned int factorizations = 0;
+    /** Iterations whose direction came from the last factorization as it
+     *  stood, with no Hessian assembled (`solver/modified Newton
+     *  contraction`). */
+    unsigned int modified_iterations = 0;
     /** Conjugate-gradient iterations preconditioned with an older
      *  factorization (`solver/factorization reuse`), failed solves
      *  included: each costs a pair of triangular solves. */
@@ -147,6 +151,26 @@ namespace bfemp
                      Vector<double>            &direction,
                      NewtonStatistics          &statistics) const;
 
+    /** Whether the linear solver holds a factorization of a Hessian on the
+     *  unknowns of @p potential as they are numbered now. */
+    bool
+    holds_factorization_for(const IncrementalPotential<dim> &potential) const;
+
+    /**
+     * `solver/modified Newton contraction` > 0: the direction p = -H_0^-1 g
+     * with H_0 the last factorized Hessian of the same unknowns (no
+     * assembly). True if it descends and its increment ||p|| / dt is at
+     * most the contraction times @p last_residual (that of the previous
+     * iteration, 0 for the first of a Newton solve: no test).
+     */
+    bool
+    modified_direction(const IncrementalPotential<dim> &potential,
+                       const Vector<double>            &minus_gradient,
+                       const double                     dt,
+                       const double                     last_residual,
+                       Vector<double>                  &direction,
+                       NewtonStatistics                &statistics) const;
+
     /**
      * The relative CG residual eta_k of `solver/forcing term` for the
      * gradient norm @p gradient_norm of the current iteration (@p first:
@@ -157,6 +181,7 @@ namespace bfemp
 
     /** `solver/log iterations`: one line on stdout for the iteration just
      *  done (@p factorized: its direction came from a new factorization;
+     *  @p modified: from the last one without an assembled Hessian;
      *  @p cg_iterations: those of its solves with an older one;
      *  @p kind: the Hessian its direction came from; @p model_ratio: the
      *  actual over the predicted decrease of the energy; @p rejected_exact:
@@ -170,6 +195,7 @@ namespace bfemp
                   const double            gradient_norm,
                   const double            forcing,
                   const bool              factorized,
+                  const bool              modified,
                   const unsigned int      cg_iterations,
                   const HessianKind       kind,
                   const double            model_ratio,

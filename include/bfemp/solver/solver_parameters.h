@@ -70,6 +70,10 @@ namespace bfemp
     /** `solver/forcing term`: "none" (CG with the last factorization to
      *  1e-8 ||g||) or "Eisenstat-Walker" (inexact Newton, to eta_k ||g||). */
     std::string forcing_term = "none";
+    /** `solver/modified Newton contraction`: keep a direction solved with
+     *  the last factorization, without assembling the Hessian, while its
+     *  increment shrinks by at least this factor per iteration; 0: off. */
+    double modified_newton_contraction = 0.;
 
     static void
     declare_parameters(ParameterHandler &prm);
