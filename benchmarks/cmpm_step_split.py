@@ -17,6 +17,12 @@ of seed 002 Section 8.1.4, BSMPM-fine):
 Each run takes a few steps of the scene on one thread; the figures are means
 over the steps after the first.
 
+With --h3-modes it also runs the seed-size beam with bfemp's richer coarse
+space (prm/cmpm/bending_beam_3d_h3_modes.prm: L = H/3, interior modes),
+three steps each on all threads: with Newton and factorization reuse, with
+modified Newton (the prm's 'solver/modified Newton contraction = 0.5') and
+BSMPM-fine with CG + ML AMG. About 15 minutes.
+
 With --seed-size it also runs the seed's own size, the 3D bending beam of
 seed 002 Section 8.1.2 (prm/cmpm/bending_beam_3d{,_fine}.prm: 640,000
 particles, cMPM 40 x 4 x 4 coarse elements against BSMPM-fine with 293K
@@ -26,7 +32,8 @@ of cMPM at two sizes then comes from one invocation. About 25 minutes; on a
 machine with less than 16 GB the CHOLMOD run is left out.
 
   /usr/bin/python3 benchmarks/cmpm_step_split.py [--build build] [--quick]
-                                                 [--seed-size]
+                                                 [--seed-size] [--h3-modes]
+                                                 [--output FILE]
 
 writes benchmarks/results/cmpm_step_split.json (see doc/performance.md).
 """
@@ -187,9 +194,12 @@ def split(rows):
     solve = mean([float(r["solve_time"]) for r in steps])
     line_search = mean([float(r["line_search_time"]) for r in steps])
     step = mean(wall)
+    counts = lambda column: mean([float(r.get(column, 0)) for r in steps])
     return {
         "unknowns": int(mean([float(r["dofs"]) for r in steps])),
-        "newton_iterations": mean([float(r["newton_iterations"]) for r in steps]),
+        "newton_iterations": counts("newton_iterations"),
+        "modified_newton_iterations": counts("modified_newton_iterations"),
+        "factorizations": counts("factorizations"),
         "step_s": step,
         "outside_newton_s": step - assembly - factorization - solve - line_search,
         "assembly_s": assembly,
@@ -215,6 +225,20 @@ def seed_size_runs():
     return runs
 
 
+def h3_modes_runs():
+    """The seed-size 3D beam with L = H/3 and interior modes, three steps:
+    Newton with factorization reuse, modified Newton, BSMPM-fine."""
+    three_steps = "subsection run\n  set end time = 0.075\nend\n"
+    prefix = os.path.join(ROOT, "prm", "cmpm", "bending_beam_3d")
+    newton = "subsection solver\n  set modified Newton contraction = 0\nend\n"
+    return [("cMPM H/3 modes Newton",
+             f"include {prefix}_h3_modes.prm\n{three_steps}{newton}"),
+            ("cMPM H/3 modes modified Newton",
+             f"include {prefix}_h3_modes.prm\n{three_steps}"),
+            ("BSMPM-fine CG + ML AMG",
+             f"include {prefix}_fine.prm\n{three_steps}")]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -224,6 +248,10 @@ def main():
     parser.add_argument("--seed-size", action="store_true",
                         help="also the seed's 3D bending beam (640,000 "
                         "particles, about 25 minutes)")
+    parser.add_argument("--h3-modes", action="store_true",
+                        help="also the seed-size 3D beam with L = H/3 and "
+                        "interior modes, Newton and modified Newton against "
+                        "BSMPM-fine (about 15 minutes)")
     parser.add_argument("--output",
                         default=os.path.join(ROOT, "benchmarks", "results",
                                              "cmpm_step_split.json"))
@@ -243,12 +271,18 @@ def main():
                        [("BSMPM-fine", beam_3d + FINE_3D)]))
     if arguments.seed_size:
         scenes.append(("3d seed size", 0, seed_size_runs()))
+    if arguments.h3_modes:
+        # all cores, named: 'run/threads' > 1 also lets CHOLMOD's large
+        # factorizations use them (doc/performance.md "BLAS threads")
+        scenes.append(("3d seed size H/3 modes", os.cpu_count(),
+                       h3_modes_runs()))
 
     results = []
     with tempfile.TemporaryDirectory() as folder:
         for label, threads, runs in scenes:
             for method, text in runs:
-                name = f"{label}_{method}".replace(" ", "_").replace("+", "")
+                name = f"{label}_{method}".replace(" ", "_").replace(
+                    "+", "").replace("/", "")
                 rows, elapsed, memory = run(arguments.build, folder, name,
                                             text, threads)
                 entry = {"scene": label, "method": method, "steps": len(rows),

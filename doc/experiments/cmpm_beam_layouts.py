@@ -45,6 +45,7 @@ import os
 import subprocess
 import sys
 import time
+from typing import NamedTuple
 
 import numpy as np
 
@@ -57,21 +58,52 @@ ROOT = make_cmpm_prms.ROOT
 CLAMP_ZONE = 3.0  # m from each end: "near the clamps"
 COLUMNS = ["layout", "max_r_u_cmpm", "time_of_max", "r_u_cmpm_end",
            "max_r_u_coarse", "soft_share", "clamp_share", "soft_volume"]
-MODES_COLUMNS = ["max_r_u_modes", "time_of_max_modes"]
-H3_MODES_COLUMNS = ["max_r_u_h3_modes", "time_of_max_h3_modes"]
 
 
-def write_scene(folder, dim, seed, modes=False, h3_modes=False):
+class Variant(NamedTuple):
+    """An optional cMPM variant run on every layout besides the three runs."""
+    key: str          # columns max_r_u_<key>, time_of_max_<key>; run name
+    option: str       # its command-line flag, as argparse names it
+    label: str        # what the summary and the progress line call it
+    prm_variant: str  # the make_cmpm_prms.py variant its wrapper includes
+    entries: str      # prm text its wrapper adds
+
+    def columns(self):
+        return [f"max_r_u_{self.key}", f"time_of_max_{self.key}"]
+
+    def run_name(self, dim):
+        return f"cmpm_bending_beam_{dim}d_{self.key}"
+
+
+VARIANTS = [
+    Variant("modes", "interior_modes", "cMPM with interior modes", "",
+            "subsection cmpm\n  set interior modes = body load\nend\n"),
+    Variant("h3_modes", "h3_modes", "L = H/3 with interior modes",
+            "h3_modes", ""),
+]
+
+
+def chosen_variants(args):
+    """The entries of VARIANTS whose flag is set in @p args."""
+    return [v for v in VARIANTS if getattr(args, v.option)]
+
+
+def columns_of(variants):
+    return COLUMNS + [c for v in variants for c in v.columns()]
+
+
+def write_scene(folder, dim, seed, variants=()):
     """The prm files of one layout in @p folder (seed None: no
     inclusions), as make_cmpm_prms.py writes them for prm/cmpm/, and the
-    wrappers that run them: cMPM, BSMPM-fine, BSMPM-coarse, with @p modes
-    cMPM with interior modes, with @p h3_modes cMPM with L = H/3 and
-    interior modes. Returns (run name, wrapper) pairs in that order."""
+    wrappers that run them: cMPM, BSMPM-fine, BSMPM-coarse, then each of
+    @p variants (entries of VARIANTS). Returns (run name, wrapper) pairs in
+    that order."""
     os.makedirs(folder, exist_ok=True)
     name = make_cmpm_prms.name_of
     files = {name("bending_beam", dim, ""):
              make_cmpm_prms.bending_beam(dim, seed)}
-    for variant in ("fine", "coarse") + (("h3_modes",) if h3_modes else ()):
+    for variant in ["fine", "coarse"] + [v.prm_variant for v in variants
+                                         if v.prm_variant]:
         files[name("bending_beam", dim, variant)] = \
             make_cmpm_prms.bending_beam_variant(dim, variant)
     for file, text in files.items():
@@ -83,20 +115,13 @@ def write_scene(folder, dim, seed, modes=False, h3_modes=False):
         write_atomically(wrapper, f"include {name('bending_beam', dim, variant)}"
                          "\nsubsection run\n  set quiet = true\nend\n")
         runs.append((f"cmpm_bending_beam_{dim}d{suffix}", wrapper))
-    if modes:
-        wrapper = os.path.join(folder, "run_modes.prm")
-        write_atomically(wrapper, f"include {name('bending_beam', dim, '')}"
+    for v in variants:
+        wrapper = os.path.join(folder, f"run_{v.key}.prm")
+        write_atomically(wrapper,
+                         f"include {name('bending_beam', dim, v.prm_variant)}"
                          "\nsubsection run\n  set quiet = true\n"
-                         f"  set name = cmpm_bending_beam_{dim}d_modes\nend\n"
-                         "subsection cmpm\n  set interior modes = body load\n"
-                         "end\n")
-        runs.append((f"cmpm_bending_beam_{dim}d_modes", wrapper))
-    if h3_modes:
-        wrapper = os.path.join(folder, "run_h3_modes.prm")
-        write_atomically(wrapper, "include "
-                         f"{name('bending_beam', dim, 'h3_modes')}"
-                         "\nsubsection run\n  set quiet = true\nend\n")
-        runs.append((f"cmpm_bending_beam_{dim}d_h3_modes", wrapper))
+                         f"  set name = {v.run_name(dim)}\nend\n" + v.entries)
+        runs.append((v.run_name(dim), wrapper))
     return runs
 
 
@@ -160,16 +185,14 @@ def read_result(path, columns):
     return row if all(c in row for c in columns) else None
 
 
-def study_layout(bfemp, folder, dim, seed, label, modes=False,
-                 h3_modes=False):
+def study_layout(bfemp, folder, dim, seed, label, variants=()):
     """Runs one layout (or reads its result.csv) and returns its row."""
     result = os.path.join(folder, "result.csv")
-    columns = (COLUMNS + (MODES_COLUMNS if modes else []) +
-               (H3_MODES_COLUMNS if h3_modes else []))
+    columns = columns_of(variants)
     row = read_result(result, columns)
     if row is not None and os.path.isfile(os.path.join(folder, "series.csv")):
         return row
-    runs = write_scene(folder, dim, seed, modes, h3_modes)
+    runs = write_scene(folder, dim, seed, variants)
     for _, wrapper in runs:
         run_bfemp(bfemp, folder, wrapper)
     out = os.path.join(folder, "output")
@@ -185,17 +208,13 @@ def study_layout(bfemp, folder, dim, seed, label, modes=False,
            "soft_share": f"{soft:.3f}", "clamp_share": f"{clamp:.3f}",
            "soft_volume": f"{volume:.3f}"}
     series = {"cmpm": cmpm_rows, "coarse": coarse_rows}
-    # the variants after the three runs, by the names write_scene gave them
-    for variant, run_name in (("modes", f"cmpm_bending_beam_{dim}d_modes"),
-                              ("h3_modes",
-                               f"cmpm_bending_beam_{dim}d_h3_modes")):
-        if run_name not in (name for name, _ in runs):
-            continue
-        variant_rows = particle_error.compare(fine, os.path.join(out, run_name))
+    for v in variants:
+        variant_rows = particle_error.compare(
+            fine, os.path.join(out, v.run_name(dim)))
         worst_variant = max(variant_rows, key=lambda r: r[1])
-        row[f"max_r_u_{variant}"] = f"{worst_variant[1]:.5f}"
-        row[f"time_of_max_{variant}"] = f"{worst_variant[0]:.3f}"
-        series[variant] = variant_rows
+        row[f"max_r_u_{v.key}"] = f"{worst_variant[1]:.5f}"
+        row[f"time_of_max_{v.key}"] = f"{worst_variant[0]:.3f}"
+        series[v.key] = variant_rows
     write_series(os.path.join(folder, "series.csv"), series)
     write_atomically(result, ",".join(columns) + "\n" +
                      ",".join(row[c] for c in columns) + "\n")
@@ -228,12 +247,12 @@ def main():
     layouts = [(str(s), s) for s in seeds]
     if not args.no_homogeneous:
         layouts.append(("homogeneous", None))
+    variants = chosen_variants(args)
     rows, start = [], time.time()
     try:
         for i, (label, seed) in enumerate(layouts):
             rows.append(study_layout(args.bfemp, os.path.join(
-                out, f"layout_{label}"), args.dim, seed, label,
-                args.interior_modes, args.h3_modes))
+                out, f"layout_{label}"), args.dim, seed, label, variants))
             if not args.quiet:
                 elapsed = time.time() - start
                 left = elapsed / (i + 1) * (len(layouts) - i - 1)
@@ -241,31 +260,24 @@ def main():
                 print(f"layout {label} ({i + 1}/{len(layouts)}): max r_u cMPM "
                       f"{r['max_r_u_cmpm']} at t = {r['time_of_max']}, "
                       f"BSMPM-coarse {r['max_r_u_coarse']}"
-                      + (f", cMPM with interior modes {r['max_r_u_modes']}"
-                         if args.interior_modes else "")
-                      + (f", L = H/3 with modes {r['max_r_u_h3_modes']}"
-                         if args.h3_modes else "")
+                      + "".join(f", {v.label} {r[f'max_r_u_{v.key}']}"
+                                for v in variants)
                       + f"; about {left:.0f} s left", flush=True)
     except particle_error.ToolError as error:
         sys.exit(f"cmpm_beam_layouts.py: {error}")
     table = os.path.join(out, "layouts.csv")
-    columns = (COLUMNS + (MODES_COLUMNS if args.interior_modes else []) +
-               (H3_MODES_COLUMNS if args.h3_modes else []))
+    columns = columns_of(variants)
     write_atomically(table, ",".join(columns) + "\n" + "".join(
         ",".join(r[c] for c in columns) + "\n" for r in rows))
     drawn = [float(r["max_r_u_cmpm"]) for r in rows
              if r["layout"] != "homogeneous"]
     print(f"{len(drawn)} layouts: max r_u of cMPM from {min(drawn):.4f} to "
           f"{max(drawn):.4f}, median {np.median(drawn):.4f}; table in {table}")
-    for flag, variant, what in ((args.interior_modes, "modes",
-                                 "with interior modes"),
-                                (args.h3_modes, "h3_modes",
-                                 "L = H/3 with interior modes")):
-        if flag:
-            drawn = [float(r[f"max_r_u_{variant}"]) for r in rows
-                     if r["layout"] != "homogeneous"]
-            print(f"{what}: from {min(drawn):.4f} to {max(drawn):.4f}, "
-                  f"median {np.median(drawn):.4f}")
+    for v in variants:
+        drawn = [float(r[f"max_r_u_{v.key}"]) for r in rows
+                 if r["layout"] != "homogeneous"]
+        print(f"{v.label}: from {min(drawn):.4f} to {max(drawn):.4f}, "
+              f"median {np.median(drawn):.4f}")
 
 
 if __name__ == "__main__":

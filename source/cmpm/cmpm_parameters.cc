@@ -93,13 +93,16 @@ namespace bfemp
   CmpmParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("cmpm");
-    enabled                  = prm.get_bool("enabled");
-    const std::string type   = prm.get("coarse element type");
-    element_type             = type == "B-spline"      ? ElementType::bspline
-                               : type == "multilinear" ? ElementType::multilinear
-                                                       : ElementType::boundary_bspline;
-    const std::string span   = prm.get("coarse node span");
-    nodes_per_span           = span == "H" ? 1 : span == "H/2" ? 2 : 3;
+    enabled                = prm.get_bool("enabled");
+    const std::string type = prm.get("coarse element type");
+    element_type           = type == "B-spline"      ? ElementType::bspline
+                             : type == "multilinear" ? ElementType::multilinear
+                                                     : ElementType::boundary_bspline;
+    const std::string span = prm.get("coarse node span");
+    // the entry's pattern admits exactly the three names
+    nodes_per_span = 1;
+    while (node_span_to_string(nodes_per_span) != span && nodes_per_span < 3)
+      ++nodes_per_span;
     const long n             = prm.get_integer("fine nodes per direction");
     empty_span_stiffness     = prm.get_double("empty span stiffness");
     weak_node_regularization = prm.get_double("weak node regularization");
@@ -136,7 +139,7 @@ namespace bfemp
                     nodes_per_span != 1),
                   "cmpm",
                   "coarse node span",
-                  "H/" + std::to_string(nodes_per_span),
+                  node_span_to_string(nodes_per_span),
                   "the multilinear coarse element has its nodes at the "
                   "element corners only: use H");
   }
@@ -155,5 +158,15 @@ namespace bfemp
         default:
           return "multilinear";
       }
+  }
+
+
+
+  std::string
+  CmpmParameters::node_span_to_string(const unsigned int nodes_per_span)
+  {
+    Assert(nodes_per_span >= 1 && nodes_per_span <= 3,
+           ExcIndexRange(nodes_per_span, 1, 4));
+    return nodes_per_span == 1 ? "H" : "H/" + std::to_string(nodes_per_span);
   }
 } // namespace bfemp

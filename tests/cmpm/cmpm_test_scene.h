@@ -154,9 +154,7 @@ namespace bfemp_tests
   variant_name(const CmpmParameters &p)
   {
     return CmpmParameters::to_string(p.element_type) +
-           (p.nodes_per_span == 1
-              ? ", L = H"
-              : ", L = H/" + std::to_string(p.nodes_per_span)) +
+           ", L = " + CmpmParameters::node_span_to_string(p.nodes_per_span) +
            ", n = " + std::to_string(p.n_fine);
   }
 } // namespace bfemp_tests

@@ -44,9 +44,7 @@ namespace
   {
     const std::string name =
       std::to_string(dim) + "D " + CmpmParameters::to_string(prm.element_type) +
-      (prm.nodes_per_span == 1
-         ? ", L = H"
-         : ", L = H/" + std::to_string(prm.nodes_per_span));
+      ", L = " + CmpmParameters::node_span_to_string(prm.nodes_per_span);
     std::array<unsigned int, dim> n_elements;
     n_elements.fill(2);
     const double                 H = 0.4;

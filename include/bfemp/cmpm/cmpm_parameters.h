@@ -134,6 +134,11 @@ namespace bfemp
     /** "B-spline", "boundary B-spline" or "multilinear". */
     static std::string
     to_string(const ElementType type);
+
+    /** `cmpm/coarse node span` as written in a prm file: "H", "H/2" or
+     *  "H/3" for 1, 2 or 3 node spacings per coarse element edge. */
+    static std::string
+    node_span_to_string(const unsigned int nodes_per_span);
   };
 } // namespace bfemp
 
