@@ -112,15 +112,9 @@ namespace
   void
   compare_end_states(const Run &a, const Run &b, const std::string &scene)
   {
-    constexpr double eps_d    = 1e-6; // both scenes' 'solver/Newton tolerance'
-    double           distance = 0.;
-    for (const auto &[id, x] : a.outcome.particles)
-      distance = std::max(distance, x.distance(b.outcome.particles.at(id)));
-    for (unsigned int k = 0; k < a.outcome.fem_positions.size(); ++k)
-      for (unsigned int i = 0; i < a.outcome.fem_positions[k].size(); ++i)
-        distance = std::max(distance,
-                            a.outcome.fem_positions[k][i].distance(
-                              b.outcome.fem_positions[k][i]));
+    constexpr double eps_d = 1e-6; // both scenes' 'solver/Newton tolerance'
+    const double distance  = std::max(particle_distance(a.outcome, b.outcome),
+                                     fem_node_distance(a.outcome, b.outcome));
     bfemp_tests::check_below(distance,
                              a.steps * eps_d * a.dt,
                              scene + ": end states with and without modified "

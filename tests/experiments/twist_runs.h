@@ -122,16 +122,9 @@ namespace twist_runs
   inline void
   compare_end_states(const Run &a, const Run &b, const std::string &what)
   {
-    double particles = 0.;
-    for (const auto &[id, x] : a.outcome.particles)
-      particles = std::max(particles, x.distance(b.outcome.particles.at(id)));
-    double nodes = 0.;
-    for (unsigned int k = 0; k < a.outcome.fem_positions.size(); ++k)
-      for (unsigned int i = 0; i < a.outcome.fem_positions[k].size(); ++i)
-        nodes = std::max(nodes,
-                         a.outcome.fem_positions[k][i].distance(
-                           b.outcome.fem_positions[k][i]));
-    const double bound = std::max(a.steps, b.steps) * eps_d * dt;
+    const double particles = particle_distance(a.outcome, b.outcome);
+    const double nodes     = fem_node_distance(a.outcome, b.outcome);
+    const double bound     = std::max(a.steps, b.steps) * eps_d * dt;
     bfemp_tests::check_below(particles,
                              bound,
                              "end states: largest particle distance between " +

@@ -179,6 +179,32 @@ namespace implicit_scene
     return outcome;
   }
 
+  /** Largest distance between the particles of two runs' end states, each
+   *  particle compared with the one of the same id. */
+  template <int dim>
+  double
+  particle_distance(const Outcome<dim> &a, const Outcome<dim> &b)
+  {
+    double distance = 0.;
+    for (const auto &[id, x] : a.particles)
+      distance = std::max(distance, x.distance(b.particles.at(id)));
+    return distance;
+  }
+
+  /** Largest distance between the FEM nodes of two runs' end states. */
+  template <int dim>
+  double
+  fem_node_distance(const Outcome<dim> &a, const Outcome<dim> &b)
+  {
+    double distance = 0.;
+    for (unsigned int k = 0; k < a.fem_positions.size(); ++k)
+      for (unsigned int i = 0; i < a.fem_positions[k].size(); ++i)
+        distance =
+          std::max(distance,
+                   a.fem_positions[k][i].distance(b.fem_positions[k][i]));
+    return distance;
+  }
+
   /** Columns of results/<name>/diagnostics.csv. */
   inline std::vector<std::vector<double>>
   columns(const std::string &name, const std::vector<std::string> &which)
