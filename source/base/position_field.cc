@@ -14,7 +14,14 @@ namespace bfemp
                             const std::string &entry)
   {
     using namespace muparser_tools;
-    components = Utilities::split_string_list(text, ',');
+    require_input(parentheses_balanced(text),
+                  where,
+                  entry,
+                  text,
+                  "the parentheses are unbalanced; expected " +
+                    std::to_string(dim) +
+                    " comma-separated numbers or expressions");
+    components = split_top_level(text, ',');
     require_input(components.size() == dim,
                   where,
                   entry,

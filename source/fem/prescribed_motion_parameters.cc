@@ -1,4 +1,5 @@
 #include <bfemp/base/input_error.h>
+#include <bfemp/base/muparser_tools.h>
 #include <bfemp/base/parameter_tools.h>
 #include <bfemp/fem/prescribed_motion.h>
 #include <bfemp/fem/prescribed_motion_parameters.h>
@@ -30,45 +31,6 @@ namespace bfemp
       char *end = nullptr;
       value     = std::strtod(trimmed.c_str(), &end);
       return end == trimmed.c_str() + trimmed.size() && std::isfinite(value);
-    }
-
-    /** Whether every ')' in @p text closes an earlier '('. */
-    bool
-    parentheses_balanced(const std::string &text)
-    {
-      int depth = 0;
-      for (const char c : text)
-        {
-          depth += (c == '(') - (c == ')');
-          if (depth < 0)
-            return false;
-        }
-      return depth == 0;
-    }
-
-    /**
-     * @p text split at the commas outside parentheses, each piece trimmed:
-     * "0.1*min(x, y), 0" gives two pieces.
-     */
-    std::vector<std::string>
-    split_top_level(const std::string &text, const char separator)
-    {
-      std::vector<std::string> pieces(1);
-      int                      depth = 0;
-      for (const char c : text)
-        {
-          if (c == '(')
-            ++depth;
-          else if (c == ')')
-            --depth;
-          if (c == separator && depth == 0)
-            pieces.emplace_back();
-          else
-            pieces.back() += c;
-        }
-      for (std::string &piece : pieces)
-        piece = trim(piece);
-      return pieces;
     }
 
     bool
@@ -321,8 +283,8 @@ namespace bfemp
                                                     : Motion::rigid;
 
     const std::string expression = prm.get("displacement");
-    displacement                 = split_top_level(expression, ',');
-    constants                    = parse_constants(prm.get("constants"), where);
+    displacement = muparser_tools::split_top_level(expression, ',');
+    constants    = parse_constants(prm.get("constants"), where);
 
     rotation_center  = get_point<dim>(prm, "rotation center");
     rotation_axis    = Tensor<1, 3>();
@@ -357,7 +319,7 @@ namespace bfemp
 
     if (motion == Motion::expression)
       {
-        require_input(parentheses_balanced(expression),
+        require_input(muparser_tools::parentheses_balanced(expression),
                       where,
                       "displacement",
                       expression,

@@ -63,9 +63,15 @@ namespace bfemp
     upper       = face[1] == '+';
     layer_depth = prm.get_double("layer depth");
 
-    const std::string              text = prm.get("traction");
+    const std::string text = prm.get("traction");
+    require_input(muparser_tools::parentheses_balanced(text),
+                  where,
+                  "traction",
+                  text,
+                  "the parentheses are unbalanced; expected " +
+                    std::to_string(dim) + " comma-separated expressions of t");
     const std::vector<std::string> components =
-      Utilities::split_string_list(text, ',');
+      muparser_tools::split_top_level(text, ',');
     require_input(components.size() == dim,
                   where,
                   "traction",

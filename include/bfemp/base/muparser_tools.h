@@ -7,13 +7,15 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace bfemp
 {
   /**
    * What every prm entry that holds muParser expressions (prescribed
-   * displacements, initial velocities) needs to report a bad expression as
-   * an InputError of its own.
+   * displacements, initial velocities, surface tractions) needs to split
+   * its components and to report a bad expression as an InputError of its
+   * own.
    */
   namespace muparser_tools
   {
@@ -53,6 +55,49 @@ namespace bfemp
       if (start != std::string::npos)
         message = message.substr(start + marker.size());
       return dealii::Utilities::trim(message);
+    }
+
+    /** Whether every ')' in @p text closes an earlier '('. */
+    inline bool
+    parentheses_balanced(const std::string &text)
+    {
+      int depth = 0;
+      for (const char c : text)
+        {
+          depth += (c == '(') - (c == ')');
+          if (depth < 0)
+            return false;
+        }
+      return depth == 0;
+    }
+
+    /**
+     * @p text split at the separators outside parentheses, each piece
+     * trimmed: "0, -1000*min(t/0.1, 1)" gives two pieces. The prm entries
+     * that hold one muParser expression per component separate them with
+     * commas, and muParser's functions of several arguments (min, max, sum,
+     * avg) use commas too, so a plain split at every comma would cut
+     * through their argument lists.
+     */
+    inline std::vector<std::string>
+    split_top_level(const std::string &text, const char separator)
+    {
+      std::vector<std::string> pieces(1);
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          if (c == '(')
+            ++depth;
+          else if (c == ')')
+            --depth;
+          if (c == separator && depth == 0)
+            pieces.emplace_back();
+          else
+            pieces.back() += c;
+        }
+      for (std::string &piece : pieces)
+        piece = dealii::Utilities::trim(piece);
+      return pieces;
     }
   } // namespace muparser_tools
 } // namespace bfemp
