@@ -87,6 +87,7 @@ namespace bfemp
             add_point(point, stencil, fictitious_K_i, fictitious_R);
           }
       }
+    mirror_lower_triangle(fictitious_K_i);
   }
 
 
@@ -147,10 +148,12 @@ namespace bfemp
                   point.weight * point.tangent[a][b][c][e] * g[q][b];
 
         // (the diagonal form keeps the blocks within one component, a == c)
+        // K_i is symmetric: only its blocks j <= i are summed here, and
+        // mirror_lower_triangle() completes it once all points are in
         for (unsigned int m = 0; m < n_stencil; ++m)
           {
             const int j = grid.interior_index(stencil.node[m]);
-            if (j < 0)
+            if (j < 0 || j > i)
               continue;
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int c = 0; c < dim; ++c)
@@ -163,6 +166,20 @@ namespace bfemp
               if (!diagonal || a == c)
                 R(dim * i + a, dim * I + c) += T[a][c] * G[I];
       }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryInteriorMap<dim>::mirror_lower_triangle(FullMatrix<double> &K_i)
+  {
+    // add_point() sums the node blocks (i, j) with j <= i, the diagonal
+    // blocks whole; their upper halves are overwritten with the lower ones,
+    // so K_i is exactly symmetric
+    for (unsigned int row = 0; row < K_i.m(); ++row)
+      for (unsigned int column = row + 1; column < K_i.n(); ++column)
+        K_i(row, column) = K_i(column, row);
   }
 
 
@@ -324,6 +341,7 @@ namespace bfemp
     FullMatrix<double> K_i(dim * n_i, dim * n_i), R(dim * n_i, dim * r);
     for (std::size_t p = 0; p < points.size(); ++p)
       add_point(points[p], stencils[p], K_i, R);
+    mirror_lower_triangle(K_i);
     const double fictitious = fictitious_weight(points);
     K_i.add(fictitious, fictitious_K_i);
     R.add(fictitious, fictitious_R);
@@ -474,6 +492,7 @@ namespace bfemp
                   gradient(dim * i + a) += f[a];
               }
           }
+        mirror_lower_triangle(K_i);
         {
           Vector<double> Kx(dim * n_i);
           fictitious_K_i.vmult(Kx, x);

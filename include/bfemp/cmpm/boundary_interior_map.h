@@ -155,13 +155,19 @@ namespace bfemp
     normalize_mode(const std::vector<FineStencil> &stencils,
                    std::vector<Tensor<2, dim>>    &control) const;
 
-    /** Adds one quadrature point's w (dP/dF)-weighted products to K_i and
-     *  R = K_ib Psi_b; @p stencil is the point's fine stencil. */
+    /** Adds one quadrature point's w (dP/dF)-weighted products to the
+     *  node blocks (i, j <= i) of K_i and to R = K_ib Psi_b; @p stencil is
+     *  the point's fine stencil. mirror_lower_triangle() completes K_i. */
     void
     add_point(const LocalQuadraturePoint<dim> &point,
               const FineStencil               &stencil,
               FullMatrix<double>              &K_i,
               FullMatrix<double>              &R) const;
+
+    /** K_i(r, c) <- K_i(c, r) above the diagonal: completes the symmetric
+     *  K_i of which add_point() sums the lower node blocks. */
+    static void
+    mirror_lower_triangle(FullMatrix<double> &K_i);
 
     const CoarseGrid<dim>        &grid;
     const CoarseBoundaryMap<dim> &psi;
