@@ -37,14 +37,15 @@ namespace
     return load;
   }
 
-  /** The InputError message of reading @p traction as a 2D traction, or
-   *  "" if it is accepted. */
+  /** The InputError message that @p read throws, or "" if it throws
+   *  none. */
+  template <typename Read>
   std::string
-  traction_refusal(const std::string &traction)
+  refusal(const Read &read)
   {
     try
       {
-        surface_load<2>(traction);
+        read();
       }
     catch (const InputError &error)
       {
@@ -54,18 +55,18 @@ namespace
   }
 
   std::string
+  traction_refusal(const std::string &traction)
+  {
+    return refusal([&]() { surface_load<2>(traction); });
+  }
+
+  std::string
   position_field_refusal(const std::string &text)
   {
-    try
-      {
-        PositionField<2> field;
-        field.parse(text, "body 0", "initial velocity");
-      }
-    catch (const InputError &error)
-      {
-        return error.what();
-      }
-    return "";
+    return refusal([&]() {
+      PositionField<2> field;
+      field.parse(text, "body 0", "initial velocity");
+    });
   }
 
   template <int dim>
