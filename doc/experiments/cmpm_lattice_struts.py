@@ -32,18 +32,16 @@ doc/experiments/data/cmpm_lattice_struts_2d.csv is a copy of one run.
 Needs numpy and the vtk Python module (Debian: python3-numpy,
 python3-vtk9)."""
 
-import argparse
 import os
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_cmpm_prms  # noqa: E402
 import particle_error  # noqa: E402
 from cmpm_beam_layouts import read_result, run_bfemp  # noqa: E402
-from run_data import write_atomically  # noqa: E402
+import parameter_study  # noqa: E402
+from run_data import write_atomically, write_table  # noqa: E402
 
-ROOT = make_cmpm_prms.ROOT
 DIM = 2
 END_TIME = 1.0
 COLUMNS = ["pitch", "strut_width", "strut_spans", "max_r_u_boundary_bspline",
@@ -104,51 +102,20 @@ def study_pitch(bfemp, folder, pitch):
         rows = particle_error.compare(fine, path)
         row[f"max_r_u_{label}"] = f"{max(r[1] for r in rows):.5f}"
         row[f"sag_{label}"] = f"{sag(path):.5f}"
-    write_atomically(result, ",".join(COLUMNS) + "\n" +
-                     ",".join(row[c] for c in COLUMNS) + "\n")
+    write_table(result, COLUMNS, [row])
     return row
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--bfemp", default=os.path.join(ROOT, "build", "bfemp"))
-    parser.add_argument("--pitches", default="0.5,0.666667,1.0")
-    parser.add_argument("--out")
-    parser.add_argument("--quiet", action="store_true")
-    args = parser.parse_args()
-    try:
-        pitches = [float(p) for p in args.pitches.split(",") if p.strip()]
-    except ValueError:
-        sys.exit(f"cmpm_lattice_struts.py: --pitches '{args.pitches}': "
-                 "expected numbers separated by commas")
-    if not pitches or any(not 0.1 <= p <= 2.0 for p in pitches):
-        sys.exit(f"cmpm_lattice_struts.py: --pitches '{args.pitches}': each "
-                 "pitch must lie in [0.1, 2] m (the bar is 2 m high)")
-    if not os.access(args.bfemp, os.X_OK):
-        sys.exit(f"cmpm_lattice_struts.py: --bfemp {args.bfemp}: no such "
-                 "executable (build bfemp first: ./setup.sh build)")
-    out = os.path.abspath(args.out or os.path.join(
-        ROOT, "output", "cmpm_lattice_struts"))
-    os.makedirs(out, exist_ok=True)
-    rows, start = [], time.time()
-    try:
-        for i, pitch in enumerate(pitches):
-            rows.append(study_pitch(args.bfemp, os.path.join(
-                out, f"pitch_{pitch:.4f}"), pitch))
-            if not args.quiet:
-                left = (time.time() - start) / (i + 1) * (len(pitches) - i - 1)
-                r = rows[-1]
-                print(f"pitch {pitch:g} m ({i + 1}/{len(pitches)}, struts "
-                      f"{r['strut_spans']} knot spans): max r_u boundary "
-                      f"B-spline {r['max_r_u_boundary_bspline']}, B-spline "
-                      f"{r['max_r_u_bspline']}; about {left:.0f} s left",
-                      flush=True)
-    except particle_error.ToolError as error:
-        sys.exit(f"cmpm_lattice_struts.py: {error}")
-    table = os.path.join(out, "struts.csv")
-    write_atomically(table, ",".join(COLUMNS) + "\n" + "".join(
-        ",".join(r[c] for c in COLUMNS) + "\n" for r in rows))
-    print(f"table in {table}")
+    parameter_study.main(
+        __doc__, "cmpm_lattice_struts.py", "pitches", "pitch",
+        "0.5,0.666667,1.0", (0.1, 2.0),
+        "m; the bar is 2 m high", study_pitch,
+        lambda p, r: (f"pitch {p:g} m (struts {r['strut_spans']} knot spans): "
+                       f"max r_u boundary B-spline "
+                       f"{r['max_r_u_boundary_bspline']}, B-spline "
+                       f"{r['max_r_u_bspline']}"),
+        "struts.csv", COLUMNS, particle_error.ToolError)
 
 
 if __name__ == "__main__":

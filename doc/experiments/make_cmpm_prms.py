@@ -446,7 +446,12 @@ HCUBE_COLUMNS = [(0.27, 0.26, 0.14, 0.09, 0.4), (0.74, 0.28, 0.12, 0.08, 2.1),
                  (0.25, 0.73, 0.10, 0.13, 1.2), (0.72, 0.75, 0.15, 0.10, 2.8)]
 
 
-def heterogeneous_cube(dim):
+def heterogeneous_cube(dim, column_scale=1.0):
+    """The cube's prm; @p column_scale scales the soft columns' semi-axes
+    in the cross-section (0: no columns, a homogeneous cube), for the study
+    doc/experiments/cmpm_cube_inclusions.py."""
+    columns = [(cx, cy, a * column_scale, b * column_scale, angle)
+               for cx, cy, a, b, angle in HCUBE_COLUMNS] if column_scale > 0 else []
     lower = [-HCUBE_H, -HCUBE_H] + ([] if dim == 2 else [-HCUBE_H])
     upper = [1 + HCUBE_H, 1 + 2 * HCUBE_H] + ([] if dim == 2 else
                                               [1 + HCUBE_H])
@@ -489,7 +494,7 @@ end
 
 subsection body 0
   set particles per cell         = {PARTICLES_PER_SPAN * (N_FINE - 2)}
-  set number of material regions = {len(HCUBE_COLUMNS)}
+  set number of material regions = {len(columns)}
   set number of surface loads    = 1
   subsection primitive 0
     set type         = box
@@ -501,7 +506,7 @@ subsection body 0
     set traction = {', '.join(traction)}
   end
 {material(2, '1e5')}"""
-    for k, (cx, cy, a, b, angle) in enumerate(HCUBE_COLUMNS):
+    for k, (cx, cy, a, b, angle) in enumerate(columns):
         if dim == 2:
             shape = (f"    set type           = ellipse\n"
                      f"    set center         = {vec(cx, cy)}\n"

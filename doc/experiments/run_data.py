@@ -7,6 +7,7 @@ Needs numpy and the vtk Python module (Debian: python3-numpy,
 python3-vtk9)."""
 import os
 import tempfile
+import time
 import xml.etree.ElementTree as ET
 
 
@@ -19,6 +20,27 @@ def write_atomically(path, text):
         out.write(text)
     os.chmod(temporary, 0o644)
     os.replace(temporary, path)
+
+
+def write_table(path, columns, rows):
+    """The rows (dicts keyed by @p columns) as a CSV file, complete or
+    absent."""
+    write_atomically(path, ",".join(columns) + "\n" + "".join(
+        ",".join(row[c] for c in columns) + "\n" for row in rows))
+
+
+def run_units(units, run_unit, describe, quiet):
+    """The rows run_unit(u) of a study's units, in order, with one progress
+    line per unit (describe(u, row), its number and an estimate of the time
+    left) unless @p quiet."""
+    rows, start = [], time.time()
+    for i, unit in enumerate(units):
+        rows.append(run_unit(unit))
+        if not quiet:
+            left = (time.time() - start) / (i + 1) * (len(units) - i - 1)
+            print(f"{describe(unit, rows[-1])} ({i + 1}/{len(units)}); "
+                  f"about {left:.0f} s left", flush=True)
+    return rows
 
 
 def csv(path):
