@@ -33,24 +33,27 @@ RUNS = [("_fine", "BSMPM-fine (reference)"), ("_coarse", "BSMPM-coarse"),
         ("", "cMPM")]
 
 
-def errors(dim, suffix):
+def errors(dim, suffix, scene="bending_beam"):
+    """(times, r_u, r_sigma) of a run of @p scene against its reference, as
+    particle_error.py --csv wrote them to doc/experiments/data/."""
     path = os.path.join(HERE, "data",
-                        f"cmpm_bending_beam_{dim}{suffix}_errors.csv")
+                        f"cmpm_{scene}_{dim}{suffix}_errors.csv")
     with open(path) as handle:
         rows = list(csv.DictReader(handle))
     return ([float(r["time"]) for r in rows], [float(r["r_u"]) for r in rows],
             [float(r["r_sigma"]) for r in rows])
 
 
-def particles(folder, time):
+def particles(folder, time, field="material_id"):
+    """The positions and the point field @p field of a run's particles at
+    @p time."""
     from vtk.util.numpy_support import vtk_to_numpy
 
     series = run_data.pvd(os.path.join(folder, "particles.pvd"))
     vtu = [f for t, f in series if abs(t - time) < 1e-9][0]
     grid = run_data.read_grid(vtu)
     x = vtk_to_numpy(grid.GetPoints().GetData())
-    material = vtk_to_numpy(grid.GetPointData().GetArray("material_id"))
-    return x, material
+    return x, vtk_to_numpy(grid.GetPointData().GetArray(field))
 
 
 def main():
