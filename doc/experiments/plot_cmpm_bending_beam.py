@@ -2,12 +2,15 @@
 """Draws seed 002 Figs. 21 and (as curves over time) the r_u it reports for
 the bending beam from bfemp's output: the deformed beam of BSMPM-fine,
 BSMPM-coarse and cMPM at two times, coloured by material, and r_u(t),
-r_sigma(t) of cMPM and BSMPM-coarse against BSMPM-fine.
+r_sigma(t) of cMPM and BSMPM-coarse against BSMPM-fine (in 3D also of
+cMPM with L = H/3 and interior modes, prm/cmpm/bending_beam_3d_h3_modes.prm,
+whose series doc/experiments/data/cmpm_bending_beam_3d_h3_modes_errors.csv
+is made the same way).
 
   for v in "" _fine _coarse; do build/bfemp prm/cmpm/bending_beam_2d$v.prm; done
   for v in "" _coarse; do /usr/bin/python3 doc/experiments/particle_error.py \\
       output/cmpm_bending_beam_2d_fine output/cmpm_bending_beam_2d$v \\
-      --csv doc/experiments/data/cmpm_bending_beam_2d$v_errors.csv; done
+      --csv doc/experiments/data/cmpm_bending_beam_2d${v}_errors.csv; done
   /usr/bin/python3 doc/experiments/plot_cmpm_bending_beam.py output 2d \\
       doc/images/cmpm_bending_beam_2d.png
 
@@ -31,6 +34,11 @@ import run_data  # noqa: E402
 
 RUNS = [("_fine", "BSMPM-fine (reference)"), ("_coarse", "BSMPM-coarse"),
         ("", "cMPM")]
+# the error curves, where their series exist: bfemp's richer coarse space
+# (prm/cmpm/bending_beam_3d_h3_modes.prm) has a 3D series only
+CURVES = [("", "cMPM", "black"),
+          ("_h3_modes", "cMPM, L = H/3 and interior modes", "tab:green"),
+          ("_coarse", "BSMPM-coarse", "tab:blue")]
 
 
 def errors(dim, suffix, scene="bending_beam"):
@@ -81,9 +89,11 @@ def main():
                 axis.tick_params(labelsize=7)
     for column, (index, name) in enumerate(((1, "r_u"), (2, "r_sigma"))):
         axis = figure.add_subplot(grid[rows, column])
-        for suffix, label, colour in (("", "cMPM", "black"),
-                                      ("_coarse", "BSMPM-coarse",
-                                       "tab:blue")):
+        for suffix, label, colour in CURVES:
+            if not os.path.isfile(os.path.join(
+                    HERE, "data", f"cmpm_bending_beam_{dim}{suffix}"
+                    "_errors.csv")):
+                continue  # e.g. no 2D series of the H/3 space
             data = errors(dim, suffix)
             axis.plot(data[0], data[index], "o-", color=colour, markersize=3,
                       label=label)
