@@ -33,9 +33,15 @@ AMG (the prm's solver) and BSMPM-fine with CHOLMOD (12.4 GB). The speed-up
 of cMPM at two sizes then comes from one invocation. About 25 minutes; on a
 machine with less than 16 GB the CHOLMOD run is left out.
 
+With --lattice it also runs the seed-size 3D lattice bar of seed 002
+Section 8.1.3 (prm/cmpm/lattice_bar_3d{,_bspline}.prm: 32 x 8 x 8 coarse
+elements, about a million particles), three steps each on all threads, on
+boundary B-spline and on B-spline coarse elements: the ratio of their
+integrals (assembly) is the seed's Table 3 comparison (3.2x).
+
   /usr/bin/python3 benchmarks/cmpm_step_split.py [--build build] [--quick]
                                                  [--seed-size] [--h3-modes]
-                                                 [--h3-steps N]
+                                                 [--h3-steps N] [--lattice]
                                                  [--output FILE]
 
 writes benchmarks/results/cmpm_step_split.json (see doc/performance.md).
@@ -243,6 +249,15 @@ def h3_modes_runs(steps):
              f"include {prefix}_fine.prm\n{window}")]
 
 
+def lattice_runs():
+    """The seed-size 3D lattice bar, three steps, on boundary B-spline and on
+    B-spline coarse elements."""
+    window = "subsection run\n  set end time = 0.075\nend\n"
+    prefix = os.path.join(ROOT, "prm", "cmpm", "lattice_bar_3d")
+    return [("cMPM boundary B-spline", f"include {prefix}.prm\n{window}"),
+            ("cMPM B-spline", f"include {prefix}_bspline.prm\n{window}")]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -259,6 +274,9 @@ def main():
     parser.add_argument("--h3-steps", type=int, default=3,
                         help="time steps of the --h3-modes runs (at least 2: "
                         "the means are over the steps after the first)")
+    parser.add_argument("--lattice", action="store_true",
+                        help="also the seed-size 3D lattice bar on boundary "
+                        "B-spline and on B-spline coarse elements")
     parser.add_argument("--output",
                         default=os.path.join(ROOT, "benchmarks", "results",
                                              "cmpm_step_split.json"))
@@ -286,6 +304,9 @@ def main():
         # factorizations use them (doc/performance.md "BLAS threads")
         scenes.append(("3d seed size H/3 modes", os.cpu_count(),
                        h3_modes_runs(arguments.h3_steps)))
+
+    if arguments.lattice:
+        scenes.append(("3d lattice bar", os.cpu_count(), lattice_runs()))
 
     results = []
     with tempfile.TemporaryDirectory() as folder:
