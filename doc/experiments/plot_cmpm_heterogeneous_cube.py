@@ -15,8 +15,8 @@ BSMPM-fine, and r_u at 0.05 s against how much of the cube is soft
 
 The first argument is the folder that holds the three run folders ("-" to
 draw only the curves); the CSVs are read from doc/experiments/data/. Fig.
-26 (strain energy over the Newton iterations) is not drawn: bfemp writes
-one row per step, not per iteration."""
+26(a, b) (the strain energy over the Newton iterations) is drawn by
+doc/experiments/cmpm_newton_history.py."""
 
 import csv
 import os

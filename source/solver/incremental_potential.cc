@@ -74,6 +74,18 @@ namespace bfemp
 
 
   template <int dim>
+  std::vector<std::string>
+  IncrementalPotential<dim>::term_names() const
+  {
+    std::vector<std::string> names;
+    for (const EnergyTerm<dim> *term : terms)
+      names.push_back(term->name());
+    return names;
+  }
+
+
+
+  template <int dim>
   void
   IncrementalPotential<dim>::gradient(const Vector<double> &u,
                                       Vector<double>       &g) const

@@ -186,7 +186,9 @@ namespace bfemp
                       "backtracks, E, ||g||, the forcing term and whether the "
                       "direction came from a new factorization or from CG "
                       "with an older one, and whether the iteration fell "
-                      "back to the projected Hessian. For finding out where "
+                      "back to the projected Hessian, then the value of every "
+                      "energy term (the elastic one is the strain energy). "
+                      "For finding out where "
                       "a scene's Newton iterations go; "
                       "benchmarks/newton_log_summary.py sums such a log per "
                       "step and friction pass.");

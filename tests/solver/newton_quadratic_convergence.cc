@@ -26,6 +26,8 @@
 #include <bfemp/solver/newton_solver.h>
 #include <bfemp/solver/solver_parameters.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -38,6 +40,27 @@ using bfemp_tests::check;
 
 namespace
 {
+  /**
+   * |sum of the "terms:" values - E| / |E| of one 'log iterations' line
+   * (1 if the line has no terms).
+   */
+  double
+  term_sum_gap(const std::string &line)
+  {
+    const std::size_t e     = line.find(", E ");
+    const std::size_t terms = line.find(", terms: ");
+    if (e == std::string::npos || terms == std::string::npos)
+      return 1.;
+    const double energy = std::stod(line.substr(e + 4));
+    double       sum    = 0.;
+    // each entry is "<name> <value> J", separated by "; "
+    std::string rest = line.substr(terms + 9) + ";";
+    for (std::size_t end; (end = rest.find(" J;")) != std::string::npos;
+         rest = rest.substr(end + 3))
+      sum += std::stod(rest.substr(rest.rfind(' ', end - 1) + 1));
+    return std::abs(sum - energy) / std::max(std::abs(energy), 1e-300);
+  }
+
   const double youngs_modulus = 1e6;
   const double poisson_ratio  = 0.3;
   const double length         = 1.;
@@ -175,13 +198,20 @@ namespace
     // 'solver/log iterations': one line per iteration, each from a new
     // factorization (no reuse here)
     unsigned int n_lines = 0, n_factorized = 0, n_projected = 0;
+    // the terms' energies at the end of each line add up to its E (printed
+    // to 10 digits each)
+    double largest_gap = 0.;
     for (std::string line; std::getline(log, line);)
       if (line.rfind("  static bar: iteration ", 0) == 0)
         {
           ++n_lines;
           n_factorized += line.find(", factorized") != std::string::npos;
           n_projected += line.find(", projected Hessian") != std::string::npos;
+          largest_gap = std::max(largest_gap, term_sum_gap(line));
         }
+    check(largest_gap < 1e-8,
+          what + "the terms' energies in each log line add up to its E "
+                 "(relative gap < 1e-8)");
     check(n_lines == statistics.iterations && n_factorized == n_lines,
           what + "the iteration log has one line per Newton iteration (" +
             std::to_string(n_lines) + "), each from a factorization (" +

@@ -49,6 +49,10 @@ namespace bfemp
     std::vector<double>
     term_values(const Vector<double> &u) const;
 
+    /** Each term's name, in the order of set_terms(). */
+    std::vector<std::string>
+    term_names() const;
+
     /** P grad E(u). */
     void
     gradient(const Vector<double> &u, Vector<double> &gradient) const;

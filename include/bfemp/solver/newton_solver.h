@@ -199,7 +199,8 @@ namespace bfemp
                   const unsigned int      cg_iterations,
                   const HessianKind       kind,
                   const double            model_ratio,
-                  const double            rejected_exact) const;
+                  const double            rejected_exact,
+                  const std::string      &term_energies) const;
 
     /**
      * 'exact step growth limit': the length ||p|| / dt of an exact-Hessian
