@@ -14,7 +14,9 @@ BSMPM-fine with the seed's maxima.
 
 The first argument is the folder that holds the three run folders ("-" to
 draw only the error curves); the error CSVs are read from
-doc/experiments/data/."""
+doc/experiments/data/. Where the series of the 3D bar cut to a 0.5 m slab
+exist (cmpm_lattice_bar_3d_slab{,_bspline,_h3}_errors.csv, doc/cmpm.md
+"Lattice bar"), their r_u(t) is drawn too."""
 
 import os
 import sys
@@ -24,7 +26,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
 from plot_cmpm_bending_beam import errors, particles  # noqa: E402
 
 RUNS = [("_fine", "BSMPM-fine (reference)"),
@@ -61,6 +64,19 @@ def main():
         axis.axhline(SEED_MAX_R_U[suffix], color=colour, linestyle="--",
                      linewidth=0.8, label=f"seed (3D), max r_u: "
                      f"{SEED_MAX_R_U[suffix]}")
+        # the 3D bar cut to a 0.5 m slab (doc/cmpm.md "Lattice bar"), where
+        # its series exists
+        if os.path.exists(os.path.join(HERE, "data", "cmpm_lattice_bar_3d_"
+                                       f"slab{suffix}_errors.csv")):
+            t, r_u, _ = errors("3d", "_slab" + suffix, "lattice_bar")
+            axis.plot(t, r_u, "s:", color=colour, markersize=3,
+                      label=label.replace("cMPM", "3D slab 0.5 m deep"))
+    if os.path.exists(os.path.join(HERE, "data", "cmpm_lattice_bar_3d_"
+                                   "slab_h3_errors.csv")):
+        t, r_u, _ = errors("3d", "_slab_h3", "lattice_bar")
+        axis.plot(t, r_u, "s:", color="tab:green", markersize=3,
+                  label="3D slab 0.5 m deep, boundary B-spline elements, "
+                  "L = H/3")
     axis.axvline(1.0, color="0.6", linewidth=0.8)
     axis.set_xlabel("t [s]")
     axis.set_ylabel("r_u against BSMPM-fine (eq. 38)")
