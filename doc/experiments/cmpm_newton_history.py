@@ -38,6 +38,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+from cmpm_beam_layouts import run_bfemp  # noqa: E402
+import particle_error  # noqa: E402
 from run_data import write_atomically, write_table  # noqa: E402
 
 RUNS = (("first", ""), ("full", "_full_newton"), ("fine", "_fine"))
@@ -55,8 +57,7 @@ LINE = re.compile(
     r".*, terms: (?P<terms>.*)$")
 
 
-class ToolError(Exception):
-    pass
+ToolError = particle_error.ToolError
 
 
 def terms_of(text):
@@ -97,12 +98,12 @@ def parse_log(path, run):
 
 def run(bfemp, folder, dim, run_name, suffix, quiet):
     """Runs one variant (unless its log is complete) and returns its rows."""
-    log = os.path.join(folder, f"{run_name}.log")
+    wrapper = os.path.join(folder, f"{run_name}.prm")
+    log = wrapper + ".log"  # where run_bfemp() writes it
     done = log + ".done"
     if not os.path.exists(done):
         prm = os.path.join(ROOT, "prm", "cmpm",
                            f"heterogeneous_cube_{dim}d{suffix}.prm")
-        wrapper = os.path.join(folder, f"{run_name}.prm")
         write_atomically(wrapper, f"""include {prm}
 subsection run
   set quiet = true
@@ -118,10 +119,7 @@ end
         if not quiet:
             print(f"cmpm_newton_history.py: running {LABELS[run_name]} "
                   f"({dim}D)", flush=True)
-        status = os.system(f"'{bfemp}' '{wrapper}' > '{log}' 2>&1")
-        if status != 0:
-            raise ToolError(f"{wrapper}: bfemp stopped with status {status} "
-                            f"(see {log})")
+        run_bfemp(bfemp, folder, wrapper)
         write_atomically(done, "")
     return parse_log(log, run_name)
 
