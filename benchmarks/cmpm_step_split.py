@@ -25,6 +25,15 @@ contraction = 0.5') and BSMPM-fine with CG + ML AMG. About 15 minutes for three
 steps; the fine run's step grows as the beam bends, so a longer window (N = 8,
 about 45 minutes) weighs that in.
 
+With --trade it also runs the seed-size beam over --h3-steps N steps in
+three coarse spaces, each with the two levers of the H/3 file (factorization
+reuse and modified Newton): the seed's (L = H/2), L = H/2 with interior modes
+and L = H/3 with interior modes; the seed's space also with the paper's
+Newton (the prm as it is); BSMPM-coarse and BSMPM-fine with CG + ML AMG. The
+speed-ups of the points of the beam's speed-accuracy trade then come from one
+invocation (their max r_u: doc/cmpm.md "Bending beam"; the plot:
+doc/experiments/plot_cmpm_beam_trade.py). About 50 minutes for N = 8.
+
 With --seed-size it also runs the seed's own size, the 3D bending beam of
 seed 002 Section 8.1.2 (prm/cmpm/bending_beam_3d{,_fine}.prm: 640,000
 particles, cMPM 40 x 4 x 4 coarse elements against BSMPM-fine with 293K
@@ -41,7 +50,8 @@ integrals (assembly) is the seed's Table 3 comparison (3.2x).
 
   /usr/bin/python3 benchmarks/cmpm_step_split.py [--build build] [--quick]
                                                  [--seed-size] [--h3-modes]
-                                                 [--h3-steps N] [--lattice]
+                                                 [--h3-steps N] [--trade]
+                                                 [--lattice]
                                                  [--output FILE]
 
 writes benchmarks/results/cmpm_step_split.json (see doc/performance.md).
@@ -249,6 +259,26 @@ def h3_modes_runs(steps):
              f"include {prefix}_fine.prm\n{window}")]
 
 
+def trade_runs(steps):
+    """The seed-size 3D beam in three coarse spaces, each with factorization
+    reuse and modified Newton, and BSMPM-fine, @p steps steps."""
+    window = f"subsection run\n  set end time = {0.025 * steps:g}\nend\n"
+    prefix = os.path.join(ROOT, "prm", "cmpm", "bending_beam_3d")
+    levers = ("subsection solver\n  set factorization reuse = 20\n"
+              "  set modified Newton contraction = 0.5\nend\n")
+    modes = "subsection cmpm\n  set interior modes = body load\nend\n"
+    return [("cMPM seed's space Newton", f"include {prefix}.prm\n{window}"),
+            ("cMPM seed's space levers",
+             f"include {prefix}.prm\n{window}{levers}"),
+            ("cMPM H/2 modes levers",
+             f"include {prefix}.prm\n{window}{levers}{modes}"),
+            ("cMPM H/3 modes levers",
+             f"include {prefix}_h3_modes.prm\n{window}"),
+            ("BSMPM-coarse", f"include {prefix}_coarse.prm\n{window}"),
+            ("BSMPM-fine CG + ML AMG",
+             f"include {prefix}_fine.prm\n{window}")]
+
+
 def lattice_runs():
     """The seed-size 3D lattice bar, three steps, on boundary B-spline and on
     B-spline coarse elements."""
@@ -272,8 +302,14 @@ def main():
                         "interior modes, Newton and modified Newton against "
                         "BSMPM-fine (about 15 minutes)")
     parser.add_argument("--h3-steps", type=int, default=3,
-                        help="time steps of the --h3-modes runs (at least 2: "
+                        help="time steps of the --h3-modes and --trade runs (at least 2: "
                         "the means are over the steps after the first)")
+    parser.add_argument("--trade", action="store_true",
+                        help="the seed-size 3D beam in the seed's space, at "
+                        "L = H/2 with interior modes and at L = H/3 with "
+                        "interior modes, all with factorization reuse and "
+                        "modified Newton, against BSMPM-fine, --h3-steps "
+                        "steps each (about 50 minutes for 8 steps)")
     parser.add_argument("--lattice", action="store_true",
                         help="also the seed-size 3D lattice bar on boundary "
                         "B-spline and on B-spline coarse elements")
@@ -304,6 +340,9 @@ def main():
         # factorizations use them (doc/performance.md "BLAS threads")
         scenes.append(("3d seed size H/3 modes", os.cpu_count(),
                        h3_modes_runs(arguments.h3_steps)))
+    if arguments.trade:
+        scenes.append(("3d seed size trade", os.cpu_count(),
+                       trade_runs(arguments.h3_steps)))
 
     if arguments.lattice:
         scenes.append(("3d lattice bar", os.cpu_count(), lattice_runs()))
